@@ -1,0 +1,33 @@
+// penumbra: the command-line front end. Parses options, runs a subcommand, and turns
+// every error into one line on stderr and a non-zero exit status.
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+
+#include "apps/penumbra/render_command.h"
+#include "core/log.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "penumbra: a physically based path tracer for glTF 2.0 scenes.\n"
+        "Renders .gltf/.glb files to linear OpenEXR images with PNG previews."};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", std::string("penumbra ") + PENUMBRA_VERSION);
+
+    penumbra::RenderCommandOptions render_options;
+    penumbra::add_render_command(app, render_options);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+    try {
+        if (app.got_subcommand("render")) return penumbra::run_render_command(render_options);
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,179 @@
+#include "core/accel/embree_accel.h"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstring>
+#include <limits>
+#include <mutex>
+#include <string>
+
+#include "core/error.h"
+#include "core/log.h"
+
+namespace penumbra {
+
+namespace {
+
+// Embree reports errors through a callback from inside C code, where throwing is not
+// allowed: log them, remember the first, and throw once control is back in ours.
+struct ErrorSink {
+    std::mutex mutex;
+    std::string first;
+};
+
+void error_callback(void* user, RTCError code, const char* str) {
+    auto* sink = static_cast<ErrorSink*>(user);
+    LOG_ERROR("embree: error " << static_cast<int>(code) << ": " << (str ? str : ""));
+    std::lock_guard<std::mutex> lock(sink->mutex);
+    if (sink->first.empty()) sink->first = str ? str : "unknown error";
+}
+
+bool memory_callback(void* user, ssize_t bytes, bool) {
+    static_cast<std::atomic<int64_t>*>(user)->fetch_add(bytes, std::memory_order_relaxed);
+    return true;
+}
+
+}  // namespace
+
+struct EmbreeAccel::Impl {
+    ErrorSink errors;
+    std::atomic<int64_t> memory{0};  // bytes Embree has allocated, from its monitor
+    RTCDevice device = nullptr;
+    RTCScene top = nullptr;
+    std::vector<RTCScene> object_scenes;
+    // geomID within an object's scene -> Scene::meshes index.
+    std::vector<std::vector<uint32_t>> mesh_ids;
+    // instID -> object index.
+    std::vector<uint32_t> instance_object;
+
+    void throw_if_error(const char* what) {
+        std::lock_guard<std::mutex> lock(errors.mutex);
+        if (!errors.first.empty())
+            throw InternalError(std::string("embree: ") + what + ": " + errors.first);
+    }
+
+    ~Impl() {
+        if (top) rtcReleaseScene(top);
+        for (RTCScene s : object_scenes)
+            if (s) rtcReleaseScene(s);
+        if (device) rtcReleaseDevice(device);
+    }
+};
+
+EmbreeAccel::EmbreeAccel(const Scene& scene) : m_impl(std::make_unique<Impl>()) {
+    const auto start = std::chrono::steady_clock::now();
+    Impl& im = *m_impl;
+    im.device = rtcNewDevice(nullptr);
+    if (!im.device) throw InternalError("embree: cannot create device");
+    rtcSetDeviceErrorFunction(im.device, error_callback, &im.errors);
+    rtcSetDeviceMemoryMonitorFunction(im.device, memory_callback, &im.memory);
+
+    // Bottom level: each Object once, whatever the number of instances.
+    im.object_scenes.reserve(scene.objects.size());
+    im.mesh_ids.resize(scene.objects.size());
+    for (size_t oi = 0; oi < scene.objects.size(); ++oi) {
+        RTCScene s = rtcNewScene(im.device);
+        im.object_scenes.push_back(s);
+        for (uint32_t mesh_index : scene.objects[oi].meshes) {
+            const TriangleMesh& mesh = scene.meshes[mesh_index];
+            RTCGeometry g = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+            // Embree's own buffers are padded for its 16-byte vertex loads.
+            auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+                g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(Vec3),
+                mesh.positions.size()));
+            std::memcpy(v, mesh.positions.data(), mesh.positions.size() * sizeof(Vec3));
+            auto* idx = static_cast<uint32_t*>(
+                rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                        3 * sizeof(uint32_t), mesh.triangle_count()));
+            std::memcpy(idx, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
+            rtcCommitGeometry(g);
+            const uint32_t geom_id = rtcAttachGeometry(s, g);
+            rtcReleaseGeometry(g);
+            if (im.mesh_ids[oi].size() <= geom_id) im.mesh_ids[oi].resize(geom_id + 1);
+            im.mesh_ids[oi][geom_id] = mesh_index;
+        }
+        rtcCommitScene(s);
+        im.throw_if_error("building an object scene");
+    }
+
+    // Top level: one instance per node that places an object.
+    im.top = rtcNewScene(im.device);
+    im.instance_object.resize(scene.instances.size());
+    for (size_t ii = 0; ii < scene.instances.size(); ++ii) {
+        const Instance& inst = scene.instances[ii];
+        RTCGeometry g = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(g, im.object_scenes[inst.object]);
+        float xfm[12];  // 3x4 column-major
+        const Mat4& m = inst.to_world.matrix();
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 3; ++r) xfm[c * 3 + r] = m(r, c);
+        rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+        rtcCommitGeometry(g);
+        rtcAttachGeometryByID(im.top, g, static_cast<unsigned>(ii));
+        rtcReleaseGeometry(g);
+        im.instance_object[ii] = inst.object;
+    }
+    rtcCommitScene(im.top);
+    im.throw_if_error("building the top-level scene");
+
+    m_stats.name = "embree";
+    m_stats.build_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    m_stats.object_scenes = im.object_scenes.size();
+    m_stats.instances = scene.instances.size();
+    m_stats.memory_bytes = static_cast<size_t>(std::max<int64_t>(0, im.memory.load()));
+}
+
+EmbreeAccel::~EmbreeAccel() = default;
+
+namespace {
+
+void fill_ray(const Ray& ray, RTCRay& r) {
+    r.org_x = ray.o.x;
+    r.org_y = ray.o.y;
+    r.org_z = ray.o.z;
+    r.dir_x = ray.d.x;
+    r.dir_y = ray.d.y;
+    r.dir_z = ray.d.z;
+    r.tnear = ray.tmin;
+    r.tfar = ray.tmax;
+    r.time = ray.time;
+    r.mask = 0xffffffffu;
+    r.id = 0;
+    r.flags = 0;
+}
+
+}  // namespace
+
+std::optional<Hit> EmbreeAccel::do_intersect(const Ray& ray) const {
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    RTCRayHit rh;
+    fill_ray(ray, rh.ray);
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(m_impl->top, &ctx, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    Hit h;
+    h.t = rh.ray.tfar;
+    h.instance = rh.hit.instID[0];
+    h.mesh = m_impl->mesh_ids[m_impl->instance_object[h.instance]][rh.hit.geomID];
+    h.prim = rh.hit.primID;
+    h.b1 = rh.hit.u;
+    h.b2 = rh.hit.v;
+    return h;
+}
+
+bool EmbreeAccel::do_occluded(const Ray& ray) const {
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    RTCRay r;
+    fill_ray(ray, r);
+    rtcOccluded1(m_impl->top, &ctx, &r);
+    return r.tfar == -std::numeric_limits<float>::infinity();
+}
+
+}  // namespace penumbra

@@ -1,0 +1,18 @@
+// Pinhole perspective projection (glTF "perspective"): looks down local -Z.
+#pragma once
+
+#include "core/camera/camera.h"
+
+namespace penumbra {
+
+class PerspectiveCamera final : public Camera {
+public:
+    PerspectiveCamera(const Transform& to_world, float yfov, int width, int height);
+    Ray generate_ray(const CameraSample& s) const override;
+
+private:
+    Transform m_to_world;
+    float m_tan_half_y, m_tan_half_x;
+};
+
+}  // namespace penumbra

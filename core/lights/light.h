@@ -1,0 +1,42 @@
+// Light sources. Radiometric units follow glTF's photometric ones one to one (a point
+// light of 1 cd has radiant intensity 1, a directional light of 1 lux gives irradiance 1,
+// an emissive factor of 1 is radiance 1), so lights and emissive surfaces stay consistent.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "core/math/vec.h"
+
+namespace penumbra {
+
+// The receiving point of a light query.
+struct ShadingPoint {
+    Vec3 p;
+    Vec3 n;  // geometric normal, or zero for a point in a medium
+};
+
+struct LightSample {
+    Spectrum Li;       // incident radiance (or intensity / d^2 for a delta light)
+    Vec3 wi;           // unit direction from the receiver towards the light
+    float dist = 0;    // distance to the light sample (infinity for directional)
+    float pdf = 0;     // solid angle density; 1 for delta lights
+    bool delta = false;
+};
+
+class Light {
+public:
+    virtual ~Light() = default;
+    // Samples incident light at ref. u in [0,1)^2, time in [0,1]. Empty when the light
+    // cannot reach ref (behind a spot cone, zero intensity).
+    virtual std::optional<LightSample> sample_Li(const ShadingPoint& ref, Vec2 u,
+                                                 float time) const = 0;
+    // Solid-angle density of sample_Li choosing wi; 0 for delta lights.
+    virtual float pdf_Li(const ShadingPoint& ref, Vec3 wi) const = 0;
+    // Total emitted power, for choosing among lights.
+    virtual float power() const = 0;
+    virtual bool is_delta() const = 0;
+    virtual std::string describe() const = 0;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,39 @@
+#include "core/lights/spot_light.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace penumbra {
+
+SpotLight::SpotLight(Vec3 position, Vec3 direction, Spectrum intensity, float inner_cone,
+                     float outer_cone)
+    : m_p(position), m_axis(normalize(direction)), m_I(intensity) {
+    // KHR_lights_punctual: scale = 1 / max(0.001, cos(inner) - cos(outer)),
+    // offset = -cos(outer) * scale, attenuation = clamp(cd * scale + offset, 0, 1)^2.
+    m_cos_outer = std::cos(outer_cone);
+    m_scale = 1.0f / std::max(0.001f, std::cos(inner_cone) - m_cos_outer);
+    m_offset = -m_cos_outer * m_scale;
+}
+
+float SpotLight::falloff(float cos_theta) const {
+    const float a = std::clamp(cos_theta * m_scale + m_offset, 0.0f, 1.0f);
+    return a * a;
+}
+
+std::optional<LightSample> SpotLight::sample_Li(const ShadingPoint& ref, Vec2, float) const {
+    const Vec3 d = m_p - ref.p;
+    const float dist2 = length_squared(d);
+    if (!(dist2 > 0)) return std::nullopt;
+    const float dist = std::sqrt(dist2);
+    const Vec3 wi = d / dist;
+    const float att = falloff(dot(-wi, m_axis));
+    if (att <= 0 || is_black(m_I)) return std::nullopt;
+    return LightSample{m_I * (att / dist2), wi, dist, 1.0f, true};
+}
+
+float SpotLight::power() const {
+    // Upper bound: the full outer cone at full intensity.
+    return luminance(m_I) * 2 * kPi * (1 - m_cos_outer);
+}
+
+}  // namespace penumbra

@@ -1,0 +1,78 @@
+#include "core/sampling/warp.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace penumbra {
+
+Vec2 square_to_concentric_disk(Vec2 u) {
+    const float ox = 2 * u.x - 1, oy = 2 * u.y - 1;
+    if (ox == 0 && oy == 0) return {0, 0};
+    float r, theta;
+    if (std::abs(ox) > std::abs(oy)) {
+        r = ox;
+        theta = (kPi / 4) * (oy / ox);
+    } else {
+        r = oy;
+        theta = kPi / 2 - (kPi / 4) * (ox / oy);
+    }
+    return {r * std::cos(theta), r * std::sin(theta)};
+}
+
+float polygon_area(int blades) { return 0.5f * blades * std::sin(2 * kPi / blades); }
+
+Vec2 square_to_polygon(Vec2 u, int blades, float rotation) {
+    // All wedges have equal area, so choose one uniformly and reuse the leftover of u.x.
+    const float scaled = u.x * blades;
+    const int k = std::min(static_cast<int>(scaled), blades - 1);
+    const float ux = scaled - k;
+    const float a0 = rotation + 2 * kPi * k / blades;
+    const float a1 = rotation + 2 * kPi * (k + 1) / blades;
+    // Uniform point in the triangle (center, v0, v1).
+    const Vec2 b = square_to_triangle({ux, u.y});
+    const Vec2 v0{std::cos(a0), std::sin(a0)}, v1{std::cos(a1), std::sin(a1)};
+    return v0 * b.x + v1 * b.y;
+}
+
+Vec3 square_to_uniform_sphere(Vec2 u) {
+    const float z = 1 - 2 * u.x;
+    const float r = std::sqrt(std::max(0.0f, 1 - z * z));
+    const float phi = 2 * kPi * u.y;
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+Vec3 square_to_uniform_hemisphere(Vec2 u) {
+    const float z = u.x;
+    const float r = std::sqrt(std::max(0.0f, 1 - z * z));
+    const float phi = 2 * kPi * u.y;
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+Vec3 square_to_cosine_hemisphere(Vec2 u) {
+    const Vec2 d = square_to_concentric_disk(u);
+    const float z = std::sqrt(std::max(0.0f, 1 - d.x * d.x - d.y * d.y));
+    return {d.x, d.y, z};
+}
+
+Vec3 square_to_uniform_cone(Vec2 u, float cos_max) {
+    const float cos_theta = (1 - u.x) + u.x * cos_max;
+    const float sin_theta = std::sqrt(std::max(0.0f, 1 - cos_theta * cos_theta));
+    const float phi = 2 * kPi * u.y;
+    return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+}
+
+float uniform_cone_pdf(float cos_max) { return 1.0f / (2 * kPi * (1 - cos_max)); }
+
+Vec2 square_to_triangle(Vec2 u) {
+    float b0, b1;
+    if (u.x < u.y) {
+        b0 = u.x / 2;
+        b1 = u.y - b0;
+    } else {
+        b1 = u.y / 2;
+        b0 = u.x - b1;
+    }
+    return {b0, b1};
+}
+
+}  // namespace penumbra

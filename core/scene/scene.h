@@ -1,0 +1,82 @@
+// The renderable scene as plain data: triangle meshes, the objects (glTF meshes) that
+// group them, instances placing objects in the world, materials, textures, cameras and
+// lights. io/ builds it; accelerators, cameras and integrators read it.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "core/lights/light.h"
+#include "core/math/bounds.h"
+#include "core/math/transform.h"
+#include "core/scene/material_desc.h"
+#include "core/texture.h"
+
+namespace penumbra {
+
+// One glTF primitive: an indexed triangle list with one material, in object space.
+struct TriangleMesh {
+    std::string name;             // "meshes[i].primitives[j]" or the mesh name
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;    // per vertex; generated when the file has none
+    std::vector<Vec2> uv0, uv1;   // TEXCOORD_0/1; empty when absent
+    std::vector<Vec4> tangents;   // xyz, w = bitangent sign; empty when absent
+    std::vector<Vec4> colors;     // COLOR_0 as linear RGBA; empty when absent
+    std::vector<uint32_t> indices;  // 3 per triangle
+    int material = -1;              // index into Scene::materials; -1: glTF default
+    Bounds3 bounds;
+
+    size_t triangle_count() const { return indices.size() / 3; }
+};
+
+// One glTF mesh: the meshes it is made of. Built once per accelerator, shared by all
+// instances that place it.
+struct Object {
+    std::string name;
+    std::vector<uint32_t> meshes;  // indices into Scene::meshes
+    Bounds3 bounds;                // object space
+};
+
+// A node that references an object, with its flattened world transform.
+struct Instance {
+    uint32_t object = 0;
+    Transform to_world;
+    int node = -1;  // glTF node index, for messages and AOVs
+    std::string name;
+};
+
+enum class ProjectionType { Perspective, Orthographic };
+
+// A camera as the file describes it. The image size is chosen at render time.
+struct CameraDesc {
+    std::string name;
+    ProjectionType type = ProjectionType::Perspective;
+    float yfov = 0.8f;        // perspective: vertical field of view, radians
+    float aspect_ratio = 0;   // perspective: width / height; 0 when the file gives none
+    float xmag = 1, ymag = 1; // orthographic: half the view's width and height
+    float znear = 0.01f;
+    float zfar = 0;           // 0: infinite
+    Transform to_world;       // camera looks down its local -Z, +Y up (glTF)
+    int node = -1;
+};
+
+struct Scene {
+    std::string source;  // file the scene came from
+    std::vector<TriangleMesh> meshes;
+    std::vector<Object> objects;
+    std::vector<Instance> instances;
+    std::vector<MaterialDesc> materials;
+    std::vector<Image> images;
+    std::vector<Texture> textures;
+    std::vector<CameraDesc> cameras;
+    std::vector<std::unique_ptr<Light>> lights;
+
+    // World-space bounds of all instances.
+    Bounds3 bounds() const;
+    size_t triangle_count() const;  // counting each instance's triangles
+    const MaterialDesc& material(int index) const;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,85 @@
+#include "core/surface_point.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace penumbra {
+
+SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
+    const Instance& inst = scene.instances[hit.instance];
+    const TriangleMesh& mesh = scene.meshes[hit.mesh];
+    const uint32_t i0 = mesh.indices[3 * hit.prim], i1 = mesh.indices[3 * hit.prim + 1],
+                   i2 = mesh.indices[3 * hit.prim + 2];
+    const float b1 = hit.b1, b2 = hit.b2, b0 = 1 - b1 - b2;
+
+    SurfacePoint sp;
+    sp.t = hit.t;
+    sp.instance = hit.instance;
+    sp.mesh = hit.mesh;
+    sp.prim = hit.prim;
+    sp.material = mesh.material;
+
+    const Transform& xf = inst.to_world;
+    const Vec3 p0 = mesh.positions[i0], p1 = mesh.positions[i1], p2 = mesh.positions[i2];
+    // Interpolating the vertices is more accurate than o + t d far from the origin.
+    sp.p = xf.point(p0 * b0 + p1 * b1 + p2 * b2);
+    const Vec3 e1 = p1 - p0, e2 = p2 - p0;
+    // Normals transform with the inverse transpose: right under non-uniform scale, and
+    // under mirroring it keeps the normal on the side the (flipped) winding implies.
+    Vec3 ng = xf.normal(cross(e1, e2));
+    const float ng_len = length(ng);
+    ng = ng_len > 0 ? ng / ng_len : -normalize(ray.d);
+    sp.ng = ng;
+
+    Vec3 ns = ng;
+    if (!mesh.normals.empty()) {
+        const Vec3 n = mesh.normals[i0] * b0 + mesh.normals[i1] * b1 + mesh.normals[i2] * b2;
+        const Vec3 nw = xf.normal(n);
+        const float len = length(nw);
+        if (len > 0 && std::isfinite(len)) ns = nw / len;
+    }
+    sp.ns = ns;
+    // The winding defines ng, but files are not always consistent with their normals:
+    // trust the shading normals for which side is "outside".
+    if (dot(sp.ng, sp.ns) < 0) sp.ng = -sp.ng;
+
+    if (!mesh.uv0.empty()) {
+        const Vec2 t0 = mesh.uv0[i0], t1 = mesh.uv0[i1], t2 = mesh.uv0[i2];
+        sp.uv0 = t0 * b0 + t1 * b1 + t2 * b2;
+        // dp/du from the triangle's UV parameterization (for tangent frames).
+        const Vec2 d1 = t1 - t0, d2 = t2 - t0;
+        const float det = d1.x * d2.y - d1.y * d2.x;
+        if (std::abs(det) > 1e-20f) sp.dpdu = xf.vector((e1 * d2.y - e2 * d1.y) / det);
+    }
+    if (!mesh.uv1.empty())
+        sp.uv1 = mesh.uv1[i0] * b0 + mesh.uv1[i1] * b1 + mesh.uv1[i2] * b2;
+    if (!mesh.tangents.empty()) {
+        const Vec4 t = mesh.tangents[i0] * b0 + mesh.tangents[i1] * b1 + mesh.tangents[i2] * b2;
+        sp.tangent = Vec4(xf.vector(t.xyz()), mesh.tangents[i0].w < 0 ? -1.0f : 1.0f);
+        if (xf.swaps_handedness()) sp.tangent.w = -sp.tangent.w;
+    }
+    if (!mesh.colors.empty())
+        sp.color = mesh.colors[i0] * b0 + mesh.colors[i1] * b1 + mesh.colors[i2] * b2;
+    return sp;
+}
+
+Vec3 offset_ray_origin(Vec3 p, Vec3 ng, Vec3 w) {
+    // A relative offset (a few float ULPs of the largest coordinate) plus an absolute
+    // floor for points near the origin. Issue "numerical robustness" refines this.
+    const float scale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1e-2f});
+    const float eps = 32.0f * std::numeric_limits<float>::epsilon() * scale;
+    return p + (dot(w, ng) < 0 ? -ng : ng) * eps;
+}
+
+Ray spawn_ray(const SurfacePoint& sp, Vec3 w, float dist, float time) {
+    Ray r;
+    r.o = offset_ray_origin(sp.p, sp.ng, w);
+    r.d = w;
+    r.tmin = 0;
+    r.tmax = std::isfinite(dist) ? dist * (1 - 1e-4f) : std::numeric_limits<float>::infinity();
+    r.time = time;
+    return r;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,51 @@
+#include "integrators/basic_integrator.h"
+
+#include "core/surface_point.h"
+#include "materials/material.h"
+
+namespace penumbra {
+
+Spectrum BasicIntegrator::Li(const Ray& camera_ray, const Scene& scene, const Accel& accel,
+                             Sampler& sampler) const {
+    Spectrum L(0), throughput(1);
+    Ray ray = camera_ray;
+    for (int depth = 0;; ++depth) {
+        const std::optional<Hit> hit = accel.intersect(ray);
+        if (!hit) {
+            L += throughput * m_options.background;
+            break;
+        }
+        const SurfacePoint sp = make_surface_point(scene, ray, *hit);
+        const Vec3 wo_world = normalize(-ray.d);
+        const ShadingData sd = shade(scene, sp, wo_world);
+        const Bsdf* bsdf = sd.bsdf.get();
+        const Vec3 wo = sd.frame.to_local(wo_world);
+        L += throughput * sd.emission;
+
+        // Direct light: one shadow ray per punctual light.
+        const ShadingPoint ref{sp.p, sd.ng};
+        for (const auto& light : scene.lights) {
+            const std::optional<LightSample> ls = light->sample_Li(ref, sampler.get_2d(), ray.time);
+            if (!ls || dot(ls->wi, sd.ng) <= 0) continue;
+            const Vec3 wi = sd.frame.to_local(ls->wi);
+            const Spectrum f = bsdf->eval(wo, wi, Transport::Radiance);
+            if (is_black(f)) continue;
+            if (accel.occluded(spawn_ray(sp, ls->wi, ls->dist, ray.time))) continue;
+            L += throughput * f * ls->Li * (std::abs(wi.z) / ls->pdf);
+        }
+
+        // Perfect specular reflection only; other lobes end the path.
+        if (depth + 1 >= m_options.max_depth || !bsdf->has_specular()) break;
+        const std::optional<BsdfSample> bs =
+            bsdf->sample(wo, sampler.get_1d(), sampler.get_2d(), Transport::Radiance);
+        if (!bs || !bs->is_specular()) break;
+        const Vec3 wi_world = sd.frame.to_world(bs->wi);
+        if (dot(wi_world, sd.ng) <= 0) break;
+        throughput *= bs->weight();
+        if (is_black(throughput)) break;
+        ray = spawn_ray(sp, wi_world, std::numeric_limits<float>::infinity(), ray.time);
+    }
+    return L;
+}
+
+}  // namespace penumbra

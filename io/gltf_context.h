@@ -1,0 +1,54 @@
+// Internal to io/: what the glTF loader's parts share while turning one parsed
+// tinygltf::Model into a Scene: the model, the file name for messages, and the helpers
+// that validate references and format "<file>: <element>: <problem>" errors.
+#pragma once
+
+#include <tiny_gltf.h>
+
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "core/scene/scene.h"
+
+namespace penumbra {
+
+struct GltfContext {
+    const tinygltf::Model& model;
+    std::string file;  // as the caller named it; prefixes every message
+
+    // Throws SceneError "<file>: <element>: <problem>".
+    [[noreturn]] void fail(const std::string& element, const std::string& problem) const {
+        throw SceneError(file + ": " + element + ": " + problem);
+    }
+    void warn(const std::string& element, const std::string& problem) const;
+    void warn_once(const std::string& element, const std::string& problem) const;
+
+    // Checks that `index` refers to one of `count` items of the kind `what` (e.g.
+    // "material"), referenced from `element`; throws naming both otherwise.
+    void check_index(const std::string& element, const char* what, int index,
+                     size_t count, const char* plural) const {
+        if (index < 0 || size_t(index) >= count)
+            fail(element, std::string(what) + " index " + std::to_string(index) +
+                              " out of range (" + std::to_string(count) + " " + plural + ")");
+    }
+};
+
+// "name[i]", the glTF element path of array entry i.
+inline std::string element(const char* array, size_t i) {
+    return std::string(array) + "[" + std::to_string(i) + "]";
+}
+
+// Each glTF mesh becomes Scene::objects[i] (same index), with one TriangleMesh per
+// triangle primitive appended to Scene::meshes (gltf_mesh.cpp).
+void load_meshes(const GltfContext& ctx, Scene& scene);
+
+// Materials, and the textures and images they use, decoded with OIIO
+// (gltf_material.cpp). Only images that a material references are decoded.
+void load_materials(const GltfContext& ctx, Scene& scene);
+
+// Instances, cameras and lights of glTF scene `scene_index` (gltf_nodes.cpp); needs
+// the objects from load_meshes.
+void load_nodes(const GltfContext& ctx, int scene_index, Scene& scene);
+
+}  // namespace penumbra

@@ -1,0 +1,167 @@
+// The glTF entry point: file checks, tinygltf parsing (images captured undecoded),
+// extension policy, then meshes, materials and the node tree (gltf_mesh.cpp,
+// gltf_material.cpp, gltf_nodes.cpp).
+#include "io/gltf_loader.h"
+
+#include <cctype>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+
+#include "core/log.h"
+#include "io/gltf_context.h"
+
+namespace penumbra {
+
+namespace {
+
+// Extensions whose meaning we implement. KHR_texture_transform is not among them:
+// TextureRef carries no UV transform, so a file that requires it is refused and one that
+// merely uses it renders with untransformed UVs (after a warning).
+const char* const kSupportedExtensions[] = {
+    "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_ior",
+    "KHR_materials_specular", "KHR_mesh_quantization"};
+
+bool is_supported(const std::string& name) {
+    for (const char* s : kSupportedExtensions)
+        if (name == s) return true;
+    return false;
+}
+
+// tinygltf's image callback. It keeps the encoded bytes of images given by a URI (data
+// or file) so that OIIO decodes every image in one place (io/image_reader.cpp). Images
+// in a bufferView are copied later, once their byte range has been checked: tinygltf
+// hands them over without checking that the view lies inside its buffer.
+bool capture_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                   const unsigned char* bytes, int size, void*) {
+    if (image->bufferView >= 0) return true;
+    image->image.assign(bytes, bytes + size);
+    image->as_is = true;
+    return true;
+}
+
+// tinygltf's messages on one line: newlines become "; " and data: URIs, which it
+// quotes whole, are shortened.
+std::string one_line(const std::string& text) {
+    std::string out;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '\n' || c == '\r') {
+            while (!out.empty() && out.back() == ' ') out.pop_back();
+            if (out.size() >= 2 && out.compare(out.size() - 2, 2, "; ") != 0) out += "; ";
+            continue;
+        }
+        out += c;
+        if (c == ',' && out.size() >= 7 && out.compare(out.size() - 7, 7, "base64,") == 0) {
+            size_t end = i + 1;
+            while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) ||
+                                         text[end] == '+' || text[end] == '/' || text[end] == '='))
+                ++end;
+            if (end - (i + 1) > 24) {
+                out += text.substr(i + 1, 16) + "...";
+                i = end - 1;
+            }
+        }
+    }
+    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
+    return out;
+}
+
+void log_lines(const std::string& file, const std::string& text) {
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        const std::string line = one_line(text.substr(start, end - start));
+        if (!line.empty()) LOG_WARNING(file << ": " << line);
+        start = end + 1;
+    }
+}
+
+void check_asset_and_extensions(const GltfContext& ctx) {
+    const tinygltf::Asset& asset = ctx.model.asset;
+    if (asset.version.compare(0, 2, "2.") != 0)
+        ctx.fail("asset", "version '" + asset.version + "' is not glTF 2.x");
+    if (!asset.minVersion.empty() && asset.minVersion != "2.0")
+        ctx.fail("asset", "minVersion '" + asset.minVersion + "' is newer than 2.0");
+    for (const std::string& name : ctx.model.extensionsRequired)
+        if (!is_supported(name))
+            ctx.fail("extensionsRequired", "unsupported extension '" + name + "'");
+    for (const std::string& name : ctx.model.extensionsUsed)
+        if (!is_supported(name))
+            log_once(LogLevel::Warning,
+                     ctx.file + ": ignoring unsupported optional extension '" + name + "'");
+}
+
+// The glTF scene to load: the caller's choice, else the file's default, else scene 0;
+// -1 when the file has no scenes.
+int choose_scene(const GltfContext& ctx, int requested) {
+    const size_t count = ctx.model.scenes.size();
+    if (requested >= 0) {
+        ctx.check_index("scenes", "requested scene", requested, count, "scenes");
+        return requested;
+    }
+    if (ctx.model.defaultScene != -1) {
+        ctx.check_index("scene", "default scene", ctx.model.defaultScene, count, "scenes");
+        return ctx.model.defaultScene;
+    }
+    return count > 0 ? 0 : -1;
+}
+
+tinygltf::Model parse(const std::string& path) {
+    std::error_code ec;
+    char magic[4] = {};
+    std::ifstream file(path, std::ios::binary);
+    if (!std::filesystem::is_regular_file(path, ec) || !file)
+        throw SceneError(path + ": cannot open file");
+    file.read(magic, sizeof(magic));
+    // GLB is recognised by its header, not its extension (glTF 2.0, section 4.4.2).
+    const bool binary = file.gcount() == 4 && std::memcmp(magic, "glTF", 4) == 0;
+
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(capture_image, nullptr);
+    tinygltf::Model model;
+    std::string err, warn;
+    bool ok = false;
+    try {
+        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                    : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    } catch (const std::exception& e) {
+        // tinygltf throws on some malformed input (e.g. an empty data: URI).
+        throw SceneError(path + ": " + one_line(e.what()));
+    }
+    log_lines(path, warn);
+    if (!ok) throw SceneError(path + ": " + (err.empty() ? "cannot parse glTF" : one_line(err)));
+    log_lines(path, err);  // tinygltf reports some recoverable problems as errors
+    return model;
+}
+
+}  // namespace
+
+void GltfContext::warn(const std::string& element, const std::string& problem) const {
+    LOG_WARNING(file << ": " << element << ": " << problem);
+}
+
+void GltfContext::warn_once(const std::string& element, const std::string& problem) const {
+    log_once(LogLevel::Warning, file + ": " + element + ": " + problem);
+}
+
+Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
+    const tinygltf::Model model = parse(path);
+    const GltfContext ctx{model, path};
+    check_asset_and_extensions(ctx);
+
+    Scene scene;
+    scene.source = path;
+    load_meshes(ctx, scene);
+    load_materials(ctx, scene);
+    const int scene_index = choose_scene(ctx, options.scene);
+    if (scene_index >= 0)
+        load_nodes(ctx, scene_index, scene);
+    else
+        ctx.warn("scenes", "the file defines no scene; nothing will be rendered");
+    return scene;
+}
+
+}  // namespace penumbra

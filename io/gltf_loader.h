@@ -1,0 +1,20 @@
+// glTF 2.0 (.gltf and .glb) to Scene. Every input is validated; problems throw
+// SceneError with the file name, the glTF element path and what was expected, e.g.
+// "scene.gltf: meshes[3].primitives[0]: POSITION accessor has 0 elements".
+#pragma once
+
+#include <string>
+
+#include "core/scene/scene.h"
+
+namespace penumbra {
+
+struct GltfLoadOptions {
+    int scene = -1;  // glTF scene index; -1: the file's default scene (or scene 0)
+};
+
+// Loads the file at path. Cameras and lights are only those the file defines; the
+// caller adds defaults (see camera/default_camera.h).
+Scene load_gltf(const std::string& path, const GltfLoadOptions& options = {});
+
+}  // namespace penumbra

@@ -1,0 +1,213 @@
+// The chosen glTF scene's node tree to Instances, CameraDescs and KHR_lights_punctual
+// lights, each with its flattened world transform (parent * local).
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/lights/directional_light.h"
+#include "core/lights/point_light.h"
+#include "core/lights/spot_light.h"
+#include "io/gltf_context.h"
+
+namespace penumbra {
+
+namespace {
+
+// A light node found during traversal; lights are made after all instances are known,
+// because a directional light needs the scene's radius.
+struct LightNode {
+    int light;
+    int node;
+    Transform to_world;
+};
+
+bool all_finite(const std::vector<double>& v) {
+    for (double x : v)
+        if (!std::isfinite(x)) return false;
+    return true;
+}
+
+// glTF 2.0, section 3.5.3: `matrix`, or T * R * S with identity defaults.
+Transform local_transform(const GltfContext& ctx, const std::string& el,
+                          const tinygltf::Node& n) {
+    if (!all_finite(n.matrix) || !all_finite(n.translation) || !all_finite(n.rotation) ||
+        !all_finite(n.scale))
+        ctx.fail(el, "transform is not finite");
+    if (!n.matrix.empty()) {
+        if (n.matrix.size() != 16) ctx.fail(el, "matrix must have 16 numbers");
+        return Transform(Mat4::from_column_major(n.matrix.data()));
+    }
+    Vec3 t(0, 0, 0), s(1, 1, 1);
+    Quat r;
+    if (!n.translation.empty()) {
+        if (n.translation.size() != 3) ctx.fail(el, "translation must have 3 numbers");
+        t = {float(n.translation[0]), float(n.translation[1]), float(n.translation[2])};
+    }
+    if (!n.rotation.empty()) {
+        if (n.rotation.size() != 4) ctx.fail(el, "rotation must have 4 numbers");
+        r = {float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2]),
+             float(n.rotation[3])};
+    }
+    if (!n.scale.empty()) {
+        if (n.scale.size() != 3) ctx.fail(el, "scale must have 3 numbers");
+        s = {float(n.scale[0]), float(n.scale[1]), float(n.scale[2])};
+    }
+    return Transform::trs(t, r, s);
+}
+
+// The rigid part of a world transform: rotation orthonormalized (Gram-Schmidt from the
+// -Z view axis, then +Y up) and translation kept. Cameras must not inherit scale.
+Transform rigid(const Transform& t) {
+    const Mat4& m = t.matrix();
+    const Vec3 y_axis(m(0, 1), m(1, 1), m(2, 1));
+    const Vec3 z_axis(m(0, 2), m(1, 2), m(2, 2));
+    const Vec3 z = normalize(z_axis);
+    const Vec3 y = normalize(y_axis - dot(y_axis, z) * z);
+    const Vec3 x = cross(y, z);
+    Mat4 r = Mat4::identity();
+    for (int i = 0; i < 3; ++i) {
+        r(i, 0) = x[i];
+        r(i, 1) = y[i];
+        r(i, 2) = z[i];
+        r(i, 3) = m(i, 3);
+    }
+    return Transform(r);
+}
+
+CameraDesc make_camera(const GltfContext& ctx, int index, const tinygltf::Node& node,
+                       const Transform& world) {
+    const tinygltf::Camera& gc = ctx.model.cameras[size_t(index)];
+    const std::string el = element("cameras", size_t(index));
+    CameraDesc c;
+    c.name = !gc.name.empty() ? gc.name : !node.name.empty() ? node.name : el;
+    if (gc.type == "perspective") {
+        const auto& p = gc.perspective;
+        if (!(p.yfov > 0 && p.yfov < kPi))
+            ctx.fail(el, "perspective.yfov " + std::to_string(p.yfov) + " not in (0, pi)");
+        if (!(p.aspectRatio >= 0)) ctx.fail(el, "perspective.aspectRatio must be > 0");
+        if (!(p.znear > 0)) ctx.fail(el, "perspective.znear must be > 0");
+        c.type = ProjectionType::Perspective;
+        c.yfov = float(p.yfov);
+        c.aspect_ratio = float(p.aspectRatio);
+        c.znear = float(p.znear);
+        c.zfar = float(p.zfar);
+    } else if (gc.type == "orthographic") {
+        const auto& o = gc.orthographic;
+        if (!(o.xmag != 0 && o.ymag != 0 && std::isfinite(o.xmag) && std::isfinite(o.ymag)))
+            ctx.fail(el, "orthographic.xmag and ymag must be nonzero");
+        c.type = ProjectionType::Orthographic;
+        c.xmag = float(std::abs(o.xmag));
+        c.ymag = float(std::abs(o.ymag));
+        c.znear = float(o.znear);
+        c.zfar = float(o.zfar);
+    } else {
+        ctx.fail(el, "type '" + gc.type + "' is not perspective or orthographic");
+    }
+    c.to_world = rigid(world);
+    return c;
+}
+
+// The KHR_lights_punctual light a node references, or -1.
+int node_light(const GltfContext& ctx, const std::string& el, const tinygltf::Node& node) {
+    const auto it = node.extensions.find("KHR_lights_punctual");
+    if (it == node.extensions.end()) return -1;
+    const tinygltf::Value& ext = it->second;
+    if (!ext.IsObject() || !ext.Get("light").IsNumber())
+        ctx.fail(el, "extensions.KHR_lights_punctual.light must be an index");
+    const int index = ext.Get("light").GetNumberAsInt();
+    ctx.check_index(el, "KHR_lights_punctual light", index, ctx.model.lights.size(), "lights");
+    return index;
+}
+
+// KHR_lights_punctual: intensity in candela (point, spot) or lux (directional), times
+// colour. `range` is ignored: we keep the physical inverse-square falloff everywhere.
+std::unique_ptr<Light> make_light(const GltfContext& ctx, const LightNode& ln,
+                                  float scene_radius) {
+    const tinygltf::Light& gl = ctx.model.lights[size_t(ln.light)];
+    const std::string el = "extensions.KHR_lights_punctual." + element("lights", size_t(ln.light));
+    Spectrum color(1, 1, 1);
+    if (!gl.color.empty()) {
+        if (gl.color.size() != 3) ctx.fail(el, "color must have 3 numbers");
+        color = {float(gl.color[0]), float(gl.color[1]), float(gl.color[2])};
+    }
+    if (!(gl.intensity >= 0) || !std::isfinite(gl.intensity))
+        ctx.fail(el, "intensity must be a finite number >= 0");
+    const Spectrum I = color * float(gl.intensity);
+    const Vec3 position = ln.to_world.point(Vec3(0, 0, 0));
+    const Vec3 axis = ln.to_world.vector(Vec3(0, 0, -1));
+    if (gl.type == "point") return std::make_unique<PointLight>(position, I);
+    if (!(length_squared(axis) > 0))
+        ctx.fail(element("nodes", size_t(ln.node)), "light direction is degenerate");
+    if (gl.type == "directional")
+        return std::make_unique<DirectionalLight>(normalize(axis), I, scene_radius);
+    if (gl.type == "spot") {
+        const double inner = gl.spot.innerConeAngle, outer = gl.spot.outerConeAngle;
+        if (!(inner >= 0 && inner <= outer && outer <= kPi / 2 + 1e-6))
+            ctx.fail(el, "spot cone angles must satisfy 0 <= innerConeAngle <= "
+                         "outerConeAngle <= pi/2");
+        return std::make_unique<SpotLight>(position, normalize(axis), I, float(inner),
+                                           float(outer));
+    }
+    ctx.fail(el, "type '" + gl.type + "' is not point, spot or directional");
+}
+
+}  // namespace
+
+void load_nodes(const GltfContext& ctx, int scene_index, Scene& scene) {
+    const tinygltf::Model& m = ctx.model;
+    const std::string sel = element("scenes", size_t(scene_index));
+    std::vector<bool> visited(m.nodes.size(), false);
+    std::vector<LightNode> lights;
+    // Depth-first with an explicit stack, so that deep hierarchies cannot overflow the
+    // call stack; each entry is a node and its parent's world transform.
+    std::vector<std::pair<int, Transform>> stack;
+    const std::vector<int>& roots = m.scenes[size_t(scene_index)].nodes;
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) {
+        ctx.check_index(sel, "node", *it, m.nodes.size(), "nodes");
+        stack.emplace_back(*it, Transform());
+    }
+    while (!stack.empty()) {
+        const auto [index, parent] = stack.back();
+        stack.pop_back();
+        const std::string el = element("nodes", size_t(index));
+        if (visited[size_t(index)])
+            ctx.fail(el, "reached twice in the node tree (a cycle, or a node with two parents)");
+        visited[size_t(index)] = true;
+        const tinygltf::Node& node = m.nodes[size_t(index)];
+        Transform world;
+        try {
+            world = parent * local_transform(ctx, el, node);
+        } catch (const std::invalid_argument&) {
+            // Zero scale is valid glTF (it hides a subtree); nothing below can be seen.
+            ctx.warn(el, "singular transform (zero scale?); its subtree is skipped");
+            continue;
+        }
+        if (node.mesh != -1) {
+            ctx.check_index(el, "mesh", node.mesh, m.meshes.size(), "meshes");
+            if (node.skin != -1)
+                ctx.warn_once("nodes", "skins are ignored (meshes keep their bind pose)");
+            if (!scene.objects[size_t(node.mesh)].meshes.empty())
+                scene.instances.push_back(Instance{uint32_t(node.mesh), world, index,
+                                                   node.name.empty() ? el : node.name});
+        }
+        if (node.camera != -1) {
+            ctx.check_index(el, "camera", node.camera, m.cameras.size(), "cameras");
+            CameraDesc c = make_camera(ctx, node.camera, node, world);
+            c.node = index;
+            scene.cameras.push_back(std::move(c));
+        }
+        const int light = node_light(ctx, el, node);
+        if (light >= 0) lights.push_back({light, index, world});
+        for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) {
+            ctx.check_index(el, "child node", *it, m.nodes.size(), "nodes");
+            stack.emplace_back(*it, world);
+        }
+    }
+
+    const Bounds3 bounds = scene.bounds();
+    const float radius =
+        bounds.empty() ? 1.0f : std::max(1.0f, 0.5f * length(bounds.diagonal()));
+    for (const LightNode& ln : lights) scene.lights.push_back(make_light(ctx, ln, radius));
+}
+
+}  // namespace penumbra

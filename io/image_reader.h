@@ -1,0 +1,24 @@
+// Decoding images (files or bytes in memory, any format OpenImageIO reads) into linear
+// float Images. Colour data stored with the sRGB transfer is converted on request.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+
+namespace penumbra {
+
+enum class ImageEncoding { Linear, Srgb };
+
+// Throws SceneError naming `name` when the data cannot be decoded.
+Image decode_image(const std::vector<uint8_t>& bytes, const std::string& name,
+                   ImageEncoding encoding);
+Image read_image(const std::string& path, ImageEncoding encoding);
+
+// The sRGB transfer function and its inverse (IEC 61966-2-1).
+float srgb_to_linear(float v);
+float linear_to_srgb(float v);
+
+}  // namespace penumbra

@@ -1,0 +1,104 @@
+#include "materials/material.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "materials/fresnel.h"
+
+namespace penumbra {
+
+const Bsdf* BsdfStorage::get() const {
+    if (auto* b = std::get_if<LambertianBsdf>(&m_v)) return b;
+    if (auto* b = std::get_if<MetalRoughBsdf>(&m_v)) return b;
+    return nullptr;
+}
+
+namespace {
+
+Vec4 sample_texture(const Scene& scene, const TextureRef& ref, const SurfacePoint& sp) {
+    const Texture& tex = scene.textures[ref.texture];
+    const Vec2 uv = ref.texcoord == 1 ? sp.uv1 : sp.uv0;
+    return lookup(tex, scene.images[tex.image], uv);
+}
+
+// Tangent-space normal map (glTF: +X right/u, +Y up/v, Z out) to a world normal.
+Vec3 apply_normal_map(const Scene& scene, const MaterialDesc& m, const SurfacePoint& sp,
+                      Vec3 ns) {
+    Vec3 t;
+    float sign = 1;
+    if (sp.tangent.w != 0) {
+        t = sp.tangent.xyz();
+        sign = sp.tangent.w;
+    } else {
+        t = sp.dpdu;
+    }
+    t = t - ns * dot(ns, t);
+    if (!(length_squared(t) > 1e-20f)) return ns;
+    t = normalize(t);
+    // glTF's bitangent is cross(normal, tangent) * w. Generated frames from dp/du
+    // follow the v direction of the image, which points down in glTF UVs.
+    const Vec3 b = cross(ns, t) * sign;
+    const Vec4 texel = sample_texture(scene, m.normal_texture, sp);
+    const Vec3 local(( texel.x * 2 - 1) * m.normal_scale, (texel.y * 2 - 1) * m.normal_scale,
+                     texel.z * 2 - 1);
+    const Vec3 n = t * local.x + b * local.y + ns * local.z;
+    const float len = length(n);
+    return len > 0 && std::isfinite(len) ? n / len : ns;
+}
+
+}  // namespace
+
+ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo) {
+    const MaterialDesc& m = scene.material(sp.material);
+    ShadingData sd;
+
+    // Shade the side the viewer is on (glTF surfaces are thin sheets to the rays).
+    Vec3 ns = sp.ns;
+    if (m.normal_texture.valid()) {
+        const Vec3 mapped = apply_normal_map(scene, m, sp, ns);
+        // A mapped normal that leans past the geometric horizon would shade the wrong
+        // side; keep the interpolated one there.
+        if (dot(mapped, sp.ng) > 0) ns = mapped;
+    }
+    const float side = dot(wo, sp.ng) < 0 ? -1.0f : 1.0f;
+    const Vec3 ng = sp.ng * side;
+    ns = ns * side;
+    sd.ng = ng;
+    sd.frame = Frame::from_normal(ns);
+
+    Vec4 base = m.base_color * sp.color;
+    if (m.base_color_texture.valid()) base = base * sample_texture(scene, m.base_color_texture, sp);
+    sd.base_color = base.xyz();
+    sd.alpha = base.w;
+
+    float metallic = m.metallic, roughness = m.roughness;
+    if (m.metallic_roughness_texture.valid()) {
+        const Vec4 mr = sample_texture(scene, m.metallic_roughness_texture, sp);
+        roughness *= mr.y;
+        metallic *= mr.z;
+    }
+    metallic = std::clamp(metallic, 0.0f, 1.0f);
+    roughness = std::clamp(roughness, 0.0f, 1.0f);
+
+    sd.emission = m.emissive * m.emissive_strength;
+    if (m.emissive_texture.valid() && !is_black(sd.emission))
+        sd.emission *= sample_texture(scene, m.emissive_texture, sp).xyz();
+
+    const float specular = std::clamp(m.specular, 0.0f, 1.0f);
+    if (metallic == 0 && specular == 0) {
+        // KHR_materials_specular with factor 0 and no metal: exactly Lambertian.
+        sd.bsdf.emplace(LambertianBsdf(sd.base_color));
+    } else {
+        MetalRoughParams p;
+        p.base_color = sd.base_color;
+        p.metallic = metallic;
+        p.alpha = roughness * roughness;
+        const Spectrum f0 = m.specular_color * f0_from_ior(m.ior);
+        p.dielectric_f0 = min(f0, Spectrum(1)) * specular;
+        p.dielectric_f90 = specular;
+        sd.bsdf.emplace(MetalRoughBsdf(p));
+    }
+    return sd;
+}
+
+}  // namespace penumbra

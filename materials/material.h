@@ -1,0 +1,38 @@
+// A material at a hit: looks up the glTF material's textures at the surface point and
+// builds the shading frame (with the normal map) and the BSDF that integrators use.
+#pragma once
+
+#include <variant>
+
+#include "core/math/frame.h"
+#include "core/scene/scene.h"
+#include "core/surface_point.h"
+#include "materials/lambertian.h"
+#include "materials/metal_rough_bsdf.h"
+
+namespace penumbra {
+
+// Holds whichever model the material turned into, without a heap allocation per hit.
+class BsdfStorage {
+public:
+    template <typename T>
+    void emplace(const T& bsdf) { m_v = bsdf; }
+    const Bsdf* get() const;
+
+private:
+    std::variant<std::monostate, LambertianBsdf, MetalRoughBsdf> m_v;
+};
+
+struct ShadingData {
+    Frame frame;          // z = shading normal (normal-mapped), on the side of wo
+    Vec3 ng;              // geometric normal, on the side of wo
+    BsdfStorage bsdf;
+    Spectrum emission;    // Le towards wo
+    Spectrum base_color;  // for the albedo AOV and debug views
+    float alpha = 1;      // coverage (baseColor alpha)
+};
+
+// wo: unit world direction towards the viewer (-ray.d).
+ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo);
+
+}  // namespace penumbra

@@ -1,0 +1,193 @@
+#!/usr/bin/env python3
+"""Writes scenes/cornell-box.gltf, the default scene (see scenes/README.md).
+
+The room is the cube [-1, 1]^3 (metres, glTF's +Y up), open towards the camera at +Z.
+Walls are exactly Lambertian (metallic 0 with KHR_materials_specular factor 0) so that
+direct lighting has a closed form. One unit-cube mesh is instanced twice with different
+non-uniform scales and rotations (the two blocks); a smooth mirror sphere (metallic 1,
+roughness 0) sits on the short block. A point light hangs just below the emissive
+ceiling panel.
+
+Run from the repository root:  python3 scripts/make_cornell_box.py
+"""
+import base64
+import json
+import math
+import struct
+
+WHITE = [0.75, 0.75, 0.75, 1.0]
+RED = [0.63, 0.065, 0.05, 1.0]
+GREEN = [0.14, 0.45, 0.091, 1.0]
+LIGHT_INTENSITY_CD = 8.0
+LIGHT_POSITION = [0.0, 0.95, 0.0]
+
+
+class Builder:
+    def __init__(self):
+        self.blob = bytearray()
+        self.views = []
+        self.accessors = []
+
+    def _view(self, data, target):
+        while len(self.blob) % 4:
+            self.blob.append(0)
+        self.views.append({"buffer": 0, "byteOffset": len(self.blob),
+                           "byteLength": len(data), "target": target})
+        self.blob += data
+        return len(self.views) - 1
+
+    def vec3(self, values):
+        data = b"".join(struct.pack("<3f", *v) for v in values)
+        lo = [min(v[i] for v in values) for i in range(3)]
+        hi = [max(v[i] for v in values) for i in range(3)]
+        self.accessors.append({"bufferView": self._view(data, 34962), "componentType": 5126,
+                               "count": len(values), "type": "VEC3", "min": lo, "max": hi})
+        return len(self.accessors) - 1
+
+    def indices(self, values):
+        data = struct.pack("<%dH" % len(values), *values)
+        self.accessors.append({"bufferView": self._view(data, 34963), "componentType": 5123,
+                               "count": len(values), "type": "SCALAR"})
+        return len(self.accessors) - 1
+
+    def primitive(self, positions, normals, indices, material):
+        return {"attributes": {"POSITION": self.vec3(positions), "NORMAL": self.vec3(normals)},
+                "indices": self.indices(indices), "material": material}
+
+
+def quad(corners, normal):
+    """Two triangles, counter-clockwise as seen from the side the normal points to."""
+    return corners, [normal] * 4, [0, 1, 2, 0, 2, 3]
+
+
+def merge(quads):
+    pos, nrm, idx = [], [], []
+    for p, n, i in quads:
+        base = len(pos)
+        pos += p
+        nrm += n
+        idx += [base + k for k in i]
+    return pos, nrm, idx
+
+
+def unit_cube():
+    """The cube [-0.5, 0.5]^3 with outward normals."""
+    quads = []
+    for axis in range(3):
+        for sign in (-1, 1):
+            u, v = [(axis + 1) % 3, (axis + 2) % 3]
+            corners = []
+            for a, b in [(-1, -1), (1, -1), (1, 1), (-1, 1)]:
+                c = [0.0, 0.0, 0.0]
+                c[axis] = 0.5 * sign
+                c[u] = 0.5 * a
+                c[v] = 0.5 * b * sign  # flip the winding on the negative side
+                corners.append(c)
+            n = [0.0, 0.0, 0.0]
+            n[axis] = float(sign)
+            quads.append(quad(corners, n))
+    return merge(quads)
+
+
+def uv_sphere(rings=24, segments=48):
+    pos, nrm, idx = [], [], []
+    for r in range(rings + 1):
+        theta = math.pi * r / rings
+        for s in range(segments + 1):
+            phi = 2 * math.pi * s / segments
+            n = [math.sin(theta) * math.cos(phi), math.cos(theta), -math.sin(theta) * math.sin(phi)]
+            pos.append(n)
+            nrm.append(n)
+    for r in range(rings):
+        for s in range(segments):
+            a = r * (segments + 1) + s
+            b = a + segments + 1
+            if r != 0:
+                idx += [a, b, a + 1]
+            if r != rings - 1:
+                idx += [a + 1, b, b + 1]
+    return pos, nrm, idx
+
+
+def y_rotation(deg):
+    h = math.radians(deg) / 2
+    return [0.0, math.sin(h), 0.0, math.cos(h)]
+
+
+def lambertian(name, color):
+    return {"name": name, "pbrMetallicRoughness": {"baseColorFactor": color, "metallicFactor": 0.0,
+                                                   "roughnessFactor": 1.0},
+            "extensions": {"KHR_materials_specular": {"specularFactor": 0.0}}}
+
+
+def main():
+    b = Builder()
+    materials = [
+        lambertian("white", WHITE),
+        lambertian("red", RED),
+        lambertian("green", GREEN),
+        {"name": "mirror", "pbrMetallicRoughness": {"baseColorFactor": [0.95, 0.95, 0.95, 1.0],
+                                                    "metallicFactor": 1.0, "roughnessFactor": 0.0}},
+        {"name": "light", "pbrMetallicRoughness": {"baseColorFactor": [0.0, 0.0, 0.0, 1.0],
+                                                   "metallicFactor": 0.0},
+         "emissiveFactor": [1.0, 1.0, 1.0],
+         "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 10.0},
+                        "KHR_materials_specular": {"specularFactor": 0.0}}},
+    ]
+    # Walls, each facing into the room.
+    white_walls = merge([
+        quad([[-1, -1, -1], [-1, -1, 1], [1, -1, 1], [1, -1, -1]], [0, 1, 0]),    # floor
+        quad([[-1, 1, -1], [1, 1, -1], [1, 1, 1], [-1, 1, 1]], [0, -1, 0]),       # ceiling
+        quad([[-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1]], [0, 0, 1]),    # back
+    ])
+    red_wall = quad([[-1, -1, -1], [-1, 1, -1], [-1, 1, 1], [-1, -1, 1]], [1, 0, 0])
+    green_wall = quad([[1, -1, -1], [1, -1, 1], [1, 1, 1], [1, 1, -1]], [-1, 0, 0])
+    y = 0.999
+    light_panel = quad([[-0.25, y, -0.2], [0.25, y, -0.2], [0.25, y, 0.2], [-0.25, y, 0.2]],
+                       [0, -1, 0])
+    meshes = [
+        {"name": "room", "primitives": [b.primitive(*white_walls, 0), b.primitive(*red_wall, 1),
+                                        b.primitive(*green_wall, 2)]},
+        {"name": "light-panel", "primitives": [b.primitive(*light_panel, 4)]},
+        {"name": "block", "primitives": [b.primitive(*unit_cube(), 0)]},
+        {"name": "sphere", "primitives": [b.primitive(*uv_sphere(), 3)]},
+    ]
+    nodes = [
+        {"name": "camera", "camera": 0, "translation": [0.0, 0.0, 3.9]},
+        {"name": "room", "mesh": 0},
+        {"name": "light-panel", "mesh": 1},
+        {"name": "point-light", "translation": LIGHT_POSITION,
+         "extensions": {"KHR_lights_punctual": {"light": 0}}},
+        {"name": "short-block", "mesh": 2, "translation": [0.35, -0.7, 0.3],
+         "rotation": y_rotation(-18.0), "scale": [0.6, 0.6, 0.6]},
+        {"name": "tall-block", "mesh": 2, "translation": [-0.35, -0.4, -0.35],
+         "rotation": y_rotation(20.0), "scale": [0.6, 1.2, 0.6]},
+        {"name": "mirror-sphere", "mesh": 3, "translation": [0.35, -0.1, 0.3],
+         "scale": [0.3, 0.3, 0.3]},
+    ]
+    gltf = {
+        "asset": {"version": "2.0", "generator": "penumbra scripts/make_cornell_box.py"},
+        "extensionsUsed": ["KHR_lights_punctual", "KHR_materials_emissive_strength",
+                           "KHR_materials_specular"],
+        "scene": 0,
+        "scenes": [{"name": "cornell-box", "nodes": list(range(len(nodes)))}],
+        "nodes": nodes,
+        "cameras": [{"name": "front", "type": "perspective",
+                     "perspective": {"yfov": 0.69, "aspectRatio": 1.0, "znear": 0.01}}],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"name": "ceiling-point", "type": "point", "color": [1.0, 1.0, 1.0],
+             "intensity": LIGHT_INTENSITY_CD}]}},
+        "materials": materials,
+        "meshes": meshes,
+        "accessors": b.accessors,
+        "bufferViews": b.views,
+        "buffers": [{"byteLength": len(b.blob), "uri": "data:application/octet-stream;base64," +
+                     base64.b64encode(bytes(b.blob)).decode("ascii")}],
+    }
+    with open("scenes/cornell-box.gltf", "w") as f:
+        json.dump(gltf, f, indent=1)
+        f.write("\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Set up, build and render the default scene to out/cornell-box.exr (+ .png preview).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh
+scripts/build.sh
+build/bin/penumbra render scenes/cornell-box.gltf -o out/cornell-box.exr --spp 64 "$@"

@@ -1,0 +1,73 @@
+#include "core/accel/embree_accel.h"
+
+#include <gtest/gtest.h>
+
+#include "support/scene_builder.h"
+
+namespace penumbra {
+namespace {
+
+TEST(EmbreeAccel, SharedMeshIsBuiltOnceAndBothInstancesAreHit) {
+    Scene scene;
+    const int mat = test::add_lambertian(scene, Spectrum(0.5f));
+    const uint32_t cube = test::add_cube_object(scene, mat);
+    test::add_instance(scene, cube, Transform::translate({-2, 0, 0}));
+    test::add_instance(scene, cube, Transform::translate({2, 0, 0}));
+    EmbreeAccel accel(scene);
+    EXPECT_EQ(accel.stats().object_scenes, 1u);
+    EXPECT_EQ(accel.stats().instances, 2u);
+
+    for (uint32_t i = 0; i < 2; ++i) {
+        const float x = i == 0 ? -2.0f : 2.0f;
+        Ray r;
+        r.o = {x, 0, 10};
+        r.d = {0, 0, -1};
+        const auto hit = accel.intersect(r);
+        ASSERT_TRUE(hit.has_value());
+        EXPECT_EQ(hit->instance, i);
+        EXPECT_EQ(hit->mesh, 0u);
+        EXPECT_NEAR(hit->t, 9.5f, 1e-5f);
+        EXPECT_TRUE(accel.occluded(r));
+    }
+    Ray miss;
+    miss.o = {0, 0, 10};
+    miss.d = {0, 0, -1};
+    EXPECT_FALSE(accel.intersect(miss).has_value());
+    EXPECT_FALSE(accel.occluded(miss));
+    EXPECT_EQ(accel.rays_traced(), 6u);
+}
+
+TEST(EmbreeAccel, InstanceTransformsApplyToHits) {
+    Scene scene;
+    const uint32_t cube = test::add_cube_object(scene, -1);
+    // Non-uniform scale and a mirror: the box spans z in [-2, 2] after the transform.
+    test::add_instance(scene, cube, Transform::scale({1, 1, -4}));
+    EmbreeAccel accel(scene);
+    Ray r;
+    r.o = {0.1f, 0.2f, 10};
+    r.d = {0, 0, -1};
+    const auto hit = accel.intersect(r);
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_NEAR(hit->t, 8.0f, 1e-5f);
+}
+
+TEST(EmbreeAccel, RespectsRayInterval) {
+    Scene scene;
+    const uint32_t cube = test::add_cube_object(scene, -1);
+    test::add_instance(scene, cube, Transform());
+    EmbreeAccel accel(scene);
+    Ray r;
+    r.o = {0, 0, 10};
+    r.d = {0, 0, -1};
+    r.tmax = 9.0f;  // stops short of the cube face at t = 9.5
+    EXPECT_FALSE(accel.intersect(r).has_value());
+    EXPECT_FALSE(accel.occluded(r));
+    r.tmax = 100;
+    r.tmin = 9.6f;  // starts inside: the far face at t = 10.5
+    const auto hit = accel.intersect(r);
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_NEAR(hit->t, 10.5f, 1e-5f);
+}
+
+}  // namespace
+}  // namespace penumbra

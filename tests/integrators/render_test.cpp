@@ -1,0 +1,109 @@
+// End-to-end renders of scenes with a known answer, and the determinism property.
+#include "integrators/render.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "core/accel/embree_accel.h"
+#include "core/camera/perspective_camera.h"
+#include "core/lights/directional_light.h"
+#include "core/lights/point_light.h"
+#include "support/scene_builder.h"
+
+namespace penumbra {
+namespace {
+
+// A large Lambertian floor (y = 0) of albedo 0.5 under a directional light of
+// irradiance E at 60 degrees from the normal, seen from above.
+Scene lit_plane(float E, float light_angle) {
+    Scene scene;
+    const int mat = test::add_lambertian(scene, Spectrum(0.5f));
+    const float s = 100;
+    const uint32_t quad =
+        test::add_quad_object(scene, {-s, 0, s}, {s, 0, s}, {s, 0, -s}, {-s, 0, -s}, mat);
+    test::add_instance(scene, quad, Transform());
+    const Vec3 travel(std::sin(light_angle), -std::cos(light_angle), 0);
+    scene.lights.push_back(std::make_unique<DirectionalLight>(travel, Spectrum(E), s));
+    return scene;
+}
+
+TEST(Render, LambertianPlaneUnderDirectionalLightMatchesAnalyticRadiance) {
+    const float E = 3.0f, angle = kPi / 3;
+    const Scene scene = lit_plane(E, angle);
+    EmbreeAccel accel(scene);
+    const PerspectiveCamera camera(Transform::look_at({0, 5, 0.01f}, {0, 0, 0}, {0, 1, 0}),
+                                   0.8f, 32, 24);
+    const auto integrator = make_integrator("basic", {});
+    RenderOptions opt;
+    opt.spp = 4;
+    opt.progress = false;
+    const Image img = render(scene, accel, camera, *integrator, opt).resolve();
+    // L = albedo / pi * E * cos(theta)
+    const float expected = 0.5f / kPi * E * std::cos(angle);
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x)
+            for (int c = 0; c < 3; ++c) ASSERT_NEAR(img.at(x, y)[c], expected, 1e-5f);
+}
+
+TEST(Render, PointLightFalloffIsInverseSquare) {
+    Scene scene;
+    const int mat = test::add_lambertian(scene, Spectrum(1.0f));
+    const uint32_t quad = test::add_quad_object(scene, {-50, 0, 50}, {50, 0, 50},
+                                                {50, 0, -50}, {-50, 0, -50}, mat);
+    test::add_instance(scene, quad, Transform());
+    const float I = 10, h = 2;
+    scene.lights.push_back(std::make_unique<PointLight>(Vec3(0, h, 0), Spectrum(I)));
+    EmbreeAccel accel(scene);
+    const auto integrator = make_integrator("basic", {});
+    for (float x : {0.0f, 1.0f, 3.0f}) {
+        Ray r;
+        r.o = {x, 1, 0.001f};
+        r.d = {0, -1, 0};
+        IndependentSampler sampler(1, 0);
+        sampler.start_pixel_sample({0, 0}, 0);
+        const Spectrum L = integrator->Li(r, scene, accel, sampler);
+        const float d2 = x * x + h * h;
+        const float cos_theta = h / std::sqrt(d2);
+        EXPECT_NEAR(L.x, 1.0f / kPi * I / d2 * cos_theta, 1e-5f) << "x = " << x;
+    }
+}
+
+TEST(Render, ImagesAreBitwiseIdenticalAcrossThreadCounts) {
+    Scene scene = lit_plane(2.0f, 0.3f);
+    const int mat = test::add_lambertian(scene, Spectrum(0.8f, 0.2f, 0.1f));
+    const uint32_t cube = test::add_cube_object(scene, mat);
+    test::add_instance(scene, cube, Transform::trs({0, 0.5f, 0}, Quat{0, 0.38f, 0, 0.92f}, {1, 1, 1}));
+    EmbreeAccel accel(scene);
+    const PerspectiveCamera camera(Transform::look_at({2, 3, 4}, {0, 0.3f, 0}, {0, 1, 0}), 0.7f,
+                                   40, 30);
+    const auto integrator = make_integrator("basic", {});
+    RenderOptions opt;
+    opt.spp = 5;
+    opt.seed = 1234;
+    opt.progress = false;
+    opt.tile_size = 7;
+    for (SamplerType type : {SamplerType::Independent, SamplerType::Stratified}) {
+        opt.sampler = type;
+        opt.threads = 1;
+        const Image a = render(scene, accel, camera, *integrator, opt).resolve();
+        opt.threads = 2;
+        const Image b = render(scene, accel, camera, *integrator, opt).resolve();
+        opt.threads = 3;
+        opt.tile_size = 5;
+        const Image c = render(scene, accel, camera, *integrator, opt).resolve();
+        opt.tile_size = 7;
+        ASSERT_EQ(a.pixels.size(), b.pixels.size());
+        EXPECT_EQ(0, std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * 4));
+        EXPECT_EQ(0, std::memcmp(a.pixels.data(), c.pixels.data(), a.pixels.size() * 4));
+        // A different seed gives a different image (the anti-aliased cube edges differ).
+        opt.seed = 99;
+        opt.threads = 1;
+        const Image d = render(scene, accel, camera, *integrator, opt).resolve();
+        opt.seed = 1234;
+        EXPECT_NE(0, std::memcmp(a.pixels.data(), d.pixels.data(), a.pixels.size() * 4));
+    }
+}
+
+}  // namespace
+}  // namespace penumbra
