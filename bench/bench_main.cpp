@@ -72,19 +72,22 @@ void BM_EmbreeIntersectIncoherent(benchmark::State& state) {
 }
 BENCHMARK(BM_EmbreeIntersectIncoherent);
 
-void BM_RenderCornellBasic(benchmark::State& state) {
+// Args: threads, integrator (0 basic, 1 path).
+void BM_RenderCornell(benchmark::State& state) {
     const Scene& scene = cornell_box();
     static const EmbreeAccel accel(scene);
+    static const LightSet lights(scene, nullptr);
+    const RenderContext ctx{scene, accel, lights};
     const auto camera = make_camera(scene.cameras[0], 128, 128);
-    const auto integrator = make_integrator("basic", {});
+    const auto integrator = make_integrator(state.range(1) ? "path" : "basic", {});
     RenderOptions opt;
     opt.spp = 4;
     opt.threads = static_cast<int>(state.range(0));
     opt.progress = false;
-    for (auto _ : state) benchmark::DoNotOptimize(render(scene, accel, *camera, *integrator, opt));
+    for (auto _ : state) benchmark::DoNotOptimize(render(ctx, *camera, *integrator, opt));
     state.SetItemsProcessed(state.iterations() * 128 * 128 * 4);
 }
-BENCHMARK(BM_RenderCornellBasic)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_RenderCornell)->Args({1, 0})->Args({2, 0})->Args({1, 1})->Args({2, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace penumbra

@@ -5,14 +5,17 @@
 
 namespace penumbra {
 
-Spectrum BasicIntegrator::Li(const Ray& camera_ray, const Scene& scene, const Accel& accel,
+Spectrum BasicIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
                              Sampler& sampler) const {
+    const Scene& scene = ctx.scene;
+    const Accel& accel = ctx.accel;
     Spectrum L(0), throughput(1);
     Ray ray = camera_ray;
     for (int depth = 0;; ++depth) {
         const std::optional<Hit> hit = accel.intersect(ray);
         if (!hit) {
-            L += throughput * m_options.background;
+            if (const EnvironmentLight* env = ctx.lights.environment())
+                L += throughput * env->Le(normalize(ray.d));
             break;
         }
         const SurfacePoint sp = make_surface_point(scene, ray, *hit);

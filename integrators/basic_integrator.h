@@ -10,8 +10,7 @@ namespace penumbra {
 class BasicIntegrator final : public Integrator {
 public:
     explicit BasicIntegrator(const IntegratorOptions& options) : m_options(options) {}
-    Spectrum Li(const Ray& ray, const Scene& scene, const Accel& accel,
-                Sampler& sampler) const override;
+    Spectrum Li(const Ray& ray, const RenderContext& ctx, Sampler& sampler) const override;
 
 private:
     IntegratorOptions m_options;

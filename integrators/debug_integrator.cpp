@@ -12,9 +12,9 @@ Spectrum id_color(uint32_t id) {
             0.15f + 0.85f * (((h >> 16) & 0xff) / 255.0f)};
 }
 
-Spectrum DebugIntegrator::Li(const Ray& ray, const Scene& scene, const Accel& accel,
-                             Sampler&) const {
-    const std::optional<Hit> hit = accel.intersect(ray);
+Spectrum DebugIntegrator::Li(const Ray& ray, const RenderContext& ctx, Sampler&) const {
+    const Scene& scene = ctx.scene;
+    const std::optional<Hit> hit = ctx.accel.intersect(ray);
     if (!hit) return Spectrum(0);
     const SurfacePoint sp = make_surface_point(scene, ray, *hit);
     switch (m_view) {

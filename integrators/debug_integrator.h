@@ -13,8 +13,7 @@ public:
     explicit DebugIntegrator(DebugView view) : m_view(view) {}
     // Normals are world space, mapped to [0,1] as 0.5 n + 0.5 for viewing; depth is the
     // distance along the (unit) camera ray; uv is (u, v, 0); instances get a hashed colour.
-    Spectrum Li(const Ray& ray, const Scene& scene, const Accel& accel,
-                Sampler& sampler) const override;
+    Spectrum Li(const Ray& ray, const RenderContext& ctx, Sampler& sampler) const override;
 
 private:
     DebugView m_view;

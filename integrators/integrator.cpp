@@ -4,11 +4,15 @@
 
 #include "integrators/basic_integrator.h"
 #include "integrators/debug_integrator.h"
+#include "integrators/direct_integrator.h"
+#include "integrators/path_integrator.h"
 
 namespace penumbra {
 
 const std::vector<std::pair<std::string, std::string>>& integrator_names() {
     static const std::vector<std::pair<std::string, std::string>> names = {
+        {"path", "path tracing with next-event estimation and MIS (the default)"},
+        {"direct", "direct light only: many light and BSDF samples, specular recursion"},
         {"basic", "classic ray tracer: direct light from punctual lights, mirror recursion"},
         {"normal", "debug: world shading normal as 0.5 n + 0.5"},
         {"geometric-normal", "debug: world geometric normal as 0.5 n + 0.5"},
@@ -22,6 +26,8 @@ const std::vector<std::pair<std::string, std::string>>& integrator_names() {
 
 std::unique_ptr<Integrator> make_integrator(const std::string& name,
                                             const IntegratorOptions& options) {
+    if (name == "path") return std::make_unique<PathIntegrator>(options);
+    if (name == "direct") return std::make_unique<DirectIntegrator>(options);
     if (name == "basic") return std::make_unique<BasicIntegrator>(options);
     if (name == "normal") return std::make_unique<DebugIntegrator>(DebugView::ShadingNormal);
     if (name == "geometric-normal")
@@ -34,6 +40,14 @@ std::unique_ptr<Integrator> make_integrator(const std::string& name,
     for (const auto& [n, d] : integrator_names()) list += (list.empty() ? "" : ", ") + n;
     throw std::invalid_argument("unknown integrator '" + name + "' (expected one of: " + list +
                                 ")");
+}
+
+LightStrategy parse_light_strategy(const std::string& name) {
+    if (name == "mis") return LightStrategy::Mis;
+    if (name == "bsdf") return LightStrategy::BsdfOnly;
+    if (name == "light") return LightStrategy::LightOnly;
+    throw std::invalid_argument("unknown light strategy '" + name +
+                                "' (expected mis, bsdf or light)");
 }
 
 }  // namespace penumbra

@@ -7,27 +7,43 @@
 #include <vector>
 
 #include "core/accel/accel.h"
+#include "core/lights/light_set.h"
 #include "core/sampling/sampler.h"
 #include "core/scene/scene.h"
 
 namespace penumbra {
 
+// What an integrator traces against: the scene data, its accelerator and its lights.
+struct RenderContext {
+    const Scene& scene;
+    const Accel& accel;
+    const LightSet& lights;
+    bool has_alpha = false;  // some material is MASK or BLEND: rays test coverage
+};
+
+// Which strategies estimate light from non-delta emitters in "path": both with MIS, or
+// only one (to measure what MIS buys). Delta lights are always sampled.
+enum class LightStrategy { Mis, BsdfOnly, LightOnly };
+
 struct IntegratorOptions {
-    int max_depth = 5;             // specular bounces for "basic"
-    Spectrum background{0, 0, 0};  // radiance of rays that escape
+    int max_depth = 8;         // path: bounces; basic/direct: specular recursion
+    int rr_depth = 3;          // path: Russian roulette from this depth on
+    LightStrategy strategy = LightStrategy::Mis;
+    int light_samples = 1;     // direct: shadow rays per shading point
+    int bsdf_samples = 1;      // direct: BSDF samples per shading point
 };
 
 class Integrator {
 public:
     virtual ~Integrator() = default;
     // Radiance along ray (world space). Uses sampler dimensions after the camera's.
-    virtual Spectrum Li(const Ray& ray, const Scene& scene, const Accel& accel,
-                        Sampler& sampler) const = 0;
+    virtual Spectrum Li(const Ray& ray, const RenderContext& ctx, Sampler& sampler) const = 0;
 };
 
 // Names accepted by make_integrator, with one-line descriptions (for --help).
 const std::vector<std::pair<std::string, std::string>>& integrator_names();
 // Throws std::invalid_argument for an unknown name.
+LightStrategy parse_light_strategy(const std::string& name);  // mis | bsdf | light
 std::unique_ptr<Integrator> make_integrator(const std::string& name,
                                             const IntegratorOptions& options);
 

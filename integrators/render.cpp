@@ -12,8 +12,9 @@
 
 namespace penumbra {
 
-Film render(const Scene& scene, const Accel& accel, const Camera& camera,
-            const Integrator& integrator, const RenderOptions& options, RenderStats* stats) {
+Film render(const RenderContext& ctx, const Camera& camera, const Integrator& integrator,
+            const RenderOptions& options, RenderStats* stats) {
+    const Accel& accel = ctx.accel;
     const int w = camera.width(), h = camera.height();
     Film film(w, h);
     const std::unique_ptr<Filter> filter = make_filter(options.filter);
@@ -42,7 +43,7 @@ Film render(const Scene& scene, const Accel& accel, const Camera& camera,
                     cs.lens = sampler->get_2d();
                     cs.time = sampler->get_1d();
                     const Ray ray = camera.generate_ray(cs);
-                    const Spectrum L = integrator.Li(ray, scene, accel, *sampler);
+                    const Spectrum L = integrator.Li(ray, ctx, *sampler);
                     film.add_sample(x, y, L, fs.weight);
                 }
         progress.update(uint64_t(x1 - x0) * (y1 - y0) * options.spp);

@@ -32,8 +32,7 @@ struct RenderStats {
     uint64_t nonfinite_samples = 0;
 };
 
-Film render(const Scene& scene, const Accel& accel, const Camera& camera,
-            const Integrator& integrator, const RenderOptions& options,
-            RenderStats* stats = nullptr);
+Film render(const RenderContext& ctx, const Camera& camera, const Integrator& integrator,
+            const RenderOptions& options, RenderStats* stats = nullptr);
 
 }  // namespace penumbra

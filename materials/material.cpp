@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/scene/emission.h"
 #include "materials/fresnel.h"
 
 namespace penumbra {
@@ -46,7 +47,30 @@ Vec3 apply_normal_map(const Scene& scene, const MaterialDesc& m, const SurfacePo
     return len > 0 && std::isfinite(len) ? n / len : ns;
 }
 
+float opacity_from_alpha(const MaterialDesc& m, float alpha) {
+    switch (m.alpha_mode) {
+        case AlphaMode::Opaque: return 1;
+        case AlphaMode::Mask: return alpha >= m.alpha_cutoff ? 1.0f : 0.0f;
+        case AlphaMode::Blend: return std::clamp(alpha, 0.0f, 1.0f);
+    }
+    return 1;
+}
+
 }  // namespace
+
+float surface_opacity(const Scene& scene, const SurfacePoint& sp) {
+    const MaterialDesc& m = scene.material(sp.material);
+    if (m.alpha_mode == AlphaMode::Opaque) return 1;
+    float alpha = m.base_color.w * sp.color.w;
+    if (m.base_color_texture.valid()) alpha *= sample_texture(scene, m.base_color_texture, sp).w;
+    return opacity_from_alpha(m, alpha);
+}
+
+bool scene_has_alpha(const Scene& scene) {
+    for (const MaterialDesc& m : scene.materials)
+        if (m.alpha_mode != AlphaMode::Opaque) return true;
+    return false;
+}
 
 ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo) {
     const MaterialDesc& m = scene.material(sp.material);
@@ -69,7 +93,7 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo) {
     Vec4 base = m.base_color * sp.color;
     if (m.base_color_texture.valid()) base = base * sample_texture(scene, m.base_color_texture, sp);
     sd.base_color = base.xyz();
-    sd.alpha = base.w;
+    sd.opacity = opacity_from_alpha(m, base.w);
 
     float metallic = m.metallic, roughness = m.roughness;
     if (m.metallic_roughness_texture.valid()) {
@@ -80,9 +104,7 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo) {
     metallic = std::clamp(metallic, 0.0f, 1.0f);
     roughness = std::clamp(roughness, 0.0f, 1.0f);
 
-    sd.emission = m.emissive * m.emissive_strength;
-    if (m.emissive_texture.valid() && !is_black(sd.emission))
-        sd.emission *= sample_texture(scene, m.emissive_texture, sp).xyz();
+    sd.emission = emitted_radiance(scene, m, sp.uv0, sp.uv1);
 
     const float specular = std::clamp(m.specular, 0.0f, 1.0f);
     if (metallic == 0 && specular == 0) {

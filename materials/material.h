@@ -29,10 +29,16 @@ struct ShadingData {
     BsdfStorage bsdf;
     Spectrum emission;    // Le towards wo
     Spectrum base_color;  // for the albedo AOV and debug views
-    float alpha = 1;      // coverage (baseColor alpha)
+    float opacity = 1;    // coverage from alphaMode: 1 opaque, 0 a hole, else partial
 };
 
 // wo: unit world direction towards the viewer (-ray.d).
 ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo);
+
+// Coverage of the surface at sp from glTF's alphaMode: OPAQUE is 1, MASK is 0 or 1 by
+// alphaCutoff, BLEND is the alpha itself (rendered as stochastic transparency).
+float surface_opacity(const Scene& scene, const SurfacePoint& sp);
+// True when some material is MASK or BLEND, so rays must test coverage.
+bool scene_has_alpha(const Scene& scene);
 
 }  // namespace penumbra

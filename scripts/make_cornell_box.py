@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
-"""Writes scenes/cornell-box.gltf, the default scene (see scenes/README.md).
+"""Writes scenes/cornell-box.gltf (the default scene, lit by an emissive ceiling panel)
+and scenes/cornell-box-point.gltf (the same room lit by a point light instead, for the
+analytic tests of the classic ray tracer). See scenes/README.md.
 
 The room is the cube [-1, 1]^3 (metres, glTF's +Y up), open towards the camera at +Z.
 Walls are exactly Lambertian (metallic 0 with KHR_materials_specular factor 0) so that
 direct lighting has a closed form. One unit-cube mesh is instanced twice with different
 non-uniform scales and rotations (the two blocks); a smooth mirror sphere (metallic 1,
-roughness 0) sits on the short block. A point light hangs just below the emissive
-ceiling panel.
+roughness 0) sits on the short block.
 
 Run from the repository root:  python3 scripts/make_cornell_box.py
 """
@@ -20,6 +21,7 @@ RED = [0.63, 0.065, 0.05, 1.0]
 GREEN = [0.14, 0.45, 0.091, 1.0]
 LIGHT_INTENSITY_CD = 8.0
 LIGHT_POSITION = [0.0, 0.95, 0.0]
+PANEL_RADIANCE = 30.0
 
 
 class Builder:
@@ -120,7 +122,7 @@ def lambertian(name, color):
             "extensions": {"KHR_materials_specular": {"specularFactor": 0.0}}}
 
 
-def main():
+def scene(point_light):
     b = Builder()
     materials = [
         lambertian("white", WHITE),
@@ -131,7 +133,7 @@ def main():
         {"name": "light", "pbrMetallicRoughness": {"baseColorFactor": [0.0, 0.0, 0.0, 1.0],
                                                    "metallicFactor": 0.0},
          "emissiveFactor": [1.0, 1.0, 1.0],
-         "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 10.0},
+         "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": PANEL_RADIANCE},
                         "KHR_materials_specular": {"specularFactor": 0.0}}},
     ]
     # Walls, each facing into the room.
@@ -148,35 +150,37 @@ def main():
     meshes = [
         {"name": "room", "primitives": [b.primitive(*white_walls, 0), b.primitive(*red_wall, 1),
                                         b.primitive(*green_wall, 2)]},
-        {"name": "light-panel", "primitives": [b.primitive(*light_panel, 4)]},
         {"name": "block", "primitives": [b.primitive(*unit_cube(), 0)]},
         {"name": "sphere", "primitives": [b.primitive(*uv_sphere(), 3)]},
     ]
+    if point_light:
+        light_node = {"name": "point-light", "translation": LIGHT_POSITION,
+                      "extensions": {"KHR_lights_punctual": {"light": 0}}}
+    else:
+        meshes.append({"name": "light-panel", "primitives": [b.primitive(*light_panel, 4)]})
+        light_node = {"name": "light-panel", "mesh": 3}
     nodes = [
         {"name": "camera", "camera": 0, "translation": [0.0, 0.0, 3.9]},
         {"name": "room", "mesh": 0},
-        {"name": "light-panel", "mesh": 1},
-        {"name": "point-light", "translation": LIGHT_POSITION,
-         "extensions": {"KHR_lights_punctual": {"light": 0}}},
-        {"name": "short-block", "mesh": 2, "translation": [0.35, -0.7, 0.3],
+        light_node,
+        {"name": "short-block", "mesh": 1, "translation": [0.35, -0.7, 0.3],
          "rotation": y_rotation(-18.0), "scale": [0.6, 0.6, 0.6]},
-        {"name": "tall-block", "mesh": 2, "translation": [-0.35, -0.4, -0.35],
+        {"name": "tall-block", "mesh": 1, "translation": [-0.35, -0.4, -0.35],
          "rotation": y_rotation(20.0), "scale": [0.6, 1.2, 0.6]},
-        {"name": "mirror-sphere", "mesh": 3, "translation": [0.35, -0.1, 0.3],
+        {"name": "mirror-sphere", "mesh": 2, "translation": [0.35, -0.1, 0.3],
          "scale": [0.3, 0.3, 0.3]},
     ]
+    if point_light:
+        materials = materials[:4]  # no emissive material
     gltf = {
         "asset": {"version": "2.0", "generator": "penumbra scripts/make_cornell_box.py"},
-        "extensionsUsed": ["KHR_lights_punctual", "KHR_materials_emissive_strength",
-                           "KHR_materials_specular"],
+        "extensionsUsed": (["KHR_lights_punctual"] if point_light else
+                           ["KHR_materials_emissive_strength"]) + ["KHR_materials_specular"],
         "scene": 0,
         "scenes": [{"name": "cornell-box", "nodes": list(range(len(nodes)))}],
         "nodes": nodes,
         "cameras": [{"name": "front", "type": "perspective",
                      "perspective": {"yfov": 0.69, "aspectRatio": 1.0, "znear": 0.01}}],
-        "extensions": {"KHR_lights_punctual": {"lights": [
-            {"name": "ceiling-point", "type": "point", "color": [1.0, 1.0, 1.0],
-             "intensity": LIGHT_INTENSITY_CD}]}},
         "materials": materials,
         "meshes": meshes,
         "accessors": b.accessors,
@@ -184,9 +188,18 @@ def main():
         "buffers": [{"byteLength": len(b.blob), "uri": "data:application/octet-stream;base64," +
                      base64.b64encode(bytes(b.blob)).decode("ascii")}],
     }
-    with open("scenes/cornell-box.gltf", "w") as f:
-        json.dump(gltf, f, indent=1)
-        f.write("\n")
+    if point_light:
+        gltf["extensions"] = {"KHR_lights_punctual": {"lights": [
+            {"name": "ceiling-point", "type": "point", "color": [1.0, 1.0, 1.0],
+             "intensity": LIGHT_INTENSITY_CD}]}}
+    return gltf
+
+
+def main():
+    for name, point_light in (("cornell-box", False), ("cornell-box-point", True)):
+        with open("scenes/%s.gltf" % name, "w") as f:
+            json.dump(scene(point_light), f, indent=1)
+            f.write("\n")
 
 
 if __name__ == "__main__":

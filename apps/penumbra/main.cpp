@@ -5,6 +5,7 @@
 #include <exception>
 #include <iostream>
 
+#include "apps/penumbra/check_accel_command.h"
 #include "apps/penumbra/render_command.h"
 #include "core/log.h"
 
@@ -17,6 +18,8 @@ int main(int argc, char** argv) {
 
     penumbra::RenderCommandOptions render_options;
     penumbra::add_render_command(app, render_options);
+    penumbra::CheckAccelOptions check_accel_options;
+    penumbra::add_check_accel_command(app, check_accel_options);
 
     try {
         app.parse(argc, argv);
@@ -25,6 +28,8 @@ int main(int argc, char** argv) {
     }
     try {
         if (app.got_subcommand("render")) return penumbra::run_render_command(render_options);
+        if (app.got_subcommand("check-accel"))
+            return penumbra::run_check_accel_command(check_accel_options);
     } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;

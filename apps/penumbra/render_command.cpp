@@ -10,11 +10,14 @@
 #include "core/camera/default_camera.h"
 #include "core/error.h"
 #include "core/lights/directional_light.h"
+#include "core/lights/light_set.h"
 #include "core/log.h"
 #include "core/progress.h"
 #include "integrators/render.h"
 #include "io/gltf_loader.h"
+#include "io/image_reader.h"
 #include "io/image_writer.h"
+#include "materials/material.h"
 
 namespace penumbra {
 
@@ -66,12 +69,37 @@ void add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(CLI::IsMember({"box", "gaussian", "blackman-harris"}));
     cmd->add_option("--accel", o.accel, "Ray intersection accelerator")
         ->capture_default_str()
-        ->check(CLI::IsMember({"embree"}));
-    cmd->add_option("--max-depth", o.max_depth, "Maximum specular bounces")
+        ->check(CLI::IsMember(
+            {"embree", "bvh", "bvh-sah", "bvh-median", "bvh-center", "grid"}));
+    cmd->add_option("--strategy", o.strategy,
+                    "path: estimators for area and environment light: mis (both, combined), "
+                    "bsdf (BSDF sampling only) or light (light sampling only)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 1024));
+        ->check(CLI::IsMember({"mis", "bsdf", "light"}));
+    cmd->add_option("--light-samples", o.light_samples,
+                    "direct: shadow rays per shading point")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1 << 16));
+    cmd->add_option("--bsdf-samples", o.bsdf_samples, "direct: BSDF samples per shading point")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1 << 16));
+    cmd->add_option("--max-depth", o.max_depth,
+                    "path: maximum bounces; basic/direct: maximum specular recursion")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1024));
+    cmd->add_option("--env", o.env,
+                    "Environment: an equirectangular HDR/EXR image (+Y up), importance-sampled")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--env-color", o.env_color, "Environment: constant radiance R G B")
+        ->expected(3);
+    cmd->add_option("--env-intensity", o.env_intensity, "Scale of the environment radiance")
+        ->capture_default_str();
+    cmd->add_option("--env-rotation", o.env_rotation,
+                    "Rotation of the environment image about +Y, in degrees")
+        ->capture_default_str();
     cmd->add_flag("!--no-default-light", o.default_light,
-                  "Do not add a key and fill light to scenes that have no lights");
+                  "Do not light scenes that have no lights of their own (otherwise: a key "
+                  "light and a dim uniform environment)");
     cmd->add_flag("-q,--quiet", o.quiet, "Only print errors");
 }
 
@@ -92,16 +120,33 @@ const CameraDesc* find_camera(const Scene& scene, const std::string& wanted) {
                      (names.empty() ? std::string("no cameras") : names) + ")");
 }
 
+float scene_radius(const Scene& scene) {
+    const Bounds3 b = scene.bounds();
+    return b.empty() ? 1.0f : std::max(0.5f * length(b.diagonal()), 1e-3f);
+}
+
 // Scenes exported without lights would render black: light them like a product shot,
 // a key light from the upper right of the camera and a dimmer fill from the left.
 void add_default_lights(Scene& scene, const CameraDesc& cam) {
-    const Bounds3 b = scene.bounds();
-    const float radius = b.empty() ? 1.0f : std::max(0.5f * length(b.diagonal()), 1e-3f);
+    const float radius = scene_radius(scene);
     const Transform& xf = cam.to_world;
     const Vec3 key = normalize(xf.vector(Vec3(-0.5f, -0.7f, -1.0f)));
     const Vec3 fill = normalize(xf.vector(Vec3(0.8f, -0.2f, -1.0f)));
     scene.lights.push_back(std::make_unique<DirectionalLight>(key, Spectrum(2.5f), radius));
     scene.lights.push_back(std::make_unique<DirectionalLight>(fill, Spectrum(0.6f), radius));
+}
+
+std::unique_ptr<EnvironmentLight> make_environment(const RenderCommandOptions& o,
+                                                   const Scene& scene) {
+    if (!o.env.empty())
+        return std::make_unique<EnvironmentLight>(read_image(o.env, ImageEncoding::Linear),
+                                                  o.env_intensity, o.env_rotation,
+                                                  scene_radius(scene));
+    if (o.env_color.size() == 3)
+        return std::make_unique<EnvironmentLight>(
+            Spectrum(o.env_color[0], o.env_color[1], o.env_color[2]) * o.env_intensity,
+            scene_radius(scene));
+    return nullptr;
 }
 
 bool has_emission(const Scene& scene) {
@@ -142,11 +187,14 @@ void render_one(const RenderCommandOptions& o, const std::string& path) {
     const int height = o.height ? o.height : std::max(1, int(std::lround(width / aspect)));
     const CameraDesc cam_desc = file_cam ? *file_cam : default_camera(scene.bounds(), aspect);
     if (!file_cam) LOG_INFO(path << ": no camera in the file; using one that frames the scene");
-    if (scene.lights.empty() && !has_emission(scene) && o.default_light &&
-        o.integrator == "basic") {
-        LOG_INFO(path << ": no lights in the file; adding a default key and fill light");
+    std::unique_ptr<EnvironmentLight> env = make_environment(o, scene);
+    if (scene.lights.empty() && !has_emission(scene) && !env && o.default_light) {
+        LOG_INFO(path << ": no lights in the file; adding a key light and a dim environment "
+                         "(--no-default-light to disable)");
         add_default_lights(scene, cam_desc);
+        env = std::make_unique<EnvironmentLight>(Spectrum(0.3f), scene_radius(scene));
     }
+    const LightSet lights(scene, std::move(env));
 
     t0 = Clock::now();
     const std::unique_ptr<Accel> accel = make_accel(parse_accel_type(o.accel), scene);
@@ -154,6 +202,9 @@ void render_one(const RenderCommandOptions& o, const std::string& path) {
 
     IntegratorOptions iopt;
     iopt.max_depth = o.max_depth;
+    iopt.strategy = parse_light_strategy(o.strategy);
+    iopt.light_samples = o.light_samples;
+    iopt.bsdf_samples = o.bsdf_samples;
     const std::unique_ptr<Integrator> integrator = make_integrator(o.integrator, iopt);
     const std::unique_ptr<Camera> camera = make_camera(cam_desc, width, height);
 
@@ -166,7 +217,8 @@ void render_one(const RenderCommandOptions& o, const std::string& path) {
     ropt.progress = !o.quiet;
     ropt.label = fs::path(path).filename().string();
     RenderStats stats;
-    const Film film = render(scene, *accel, *camera, *integrator, ropt, &stats);
+    const RenderContext ctx{scene, *accel, lights, scene_has_alpha(scene)};
+    const Film film = render(ctx, *camera, *integrator, ropt, &stats);
 
     t0 = Clock::now();
     const Image image = film.resolve();
@@ -175,6 +227,8 @@ void render_one(const RenderCommandOptions& o, const std::string& path) {
         {"penumbra:scene", path},
         {"penumbra:camera", cam_desc.name},
         {"penumbra:integrator", o.integrator},
+        {"penumbra:strategy", o.strategy},
+        {"penumbra:max_depth", std::to_string(o.max_depth)},
         {"penumbra:accelerator", o.accel},
         {"penumbra:sampler", o.sampler},
         {"penumbra:filter", o.filter},

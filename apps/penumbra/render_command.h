@@ -18,11 +18,16 @@ struct RenderCommandOptions {
     int threads = 0;
     unsigned long long seed = 0;
     std::string camera;   // name or index; empty: the first camera, or a default one
-    std::string integrator = "basic";
+    std::string integrator = "path";
+    std::string strategy = "mis";
+    int light_samples = 1, bsdf_samples = 1;
+    std::string env;            // equirectangular image
+    std::vector<float> env_color;  // constant environment radiance (r g b)
+    float env_intensity = 1, env_rotation = 0;
     std::string sampler = "stratified";
     std::string filter = "gaussian";
     std::string accel = "embree";
-    int max_depth = 5;
+    int max_depth = 8;
     bool default_light = true;
     bool quiet = false;
 };

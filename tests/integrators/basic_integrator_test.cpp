@@ -19,15 +19,18 @@ Spectrum trace(const Scene& scene, const Accel& accel, Vec3 o, Vec3 d, int max_d
     Ray r;
     r.o = o;
     r.d = normalize(d);
-    return integrator.Li(r, scene, accel, sampler);
+    const LightSet lights(scene, nullptr);
+    return integrator.Li(r, RenderContext{scene, accel, lights}, sampler);
 }
 
 TEST(BasicIntegrator, CornellBoxFloorBelowTheLightMatchesAnalyticValue) {
-    const Scene scene = load_gltf(test::source_path("scenes/cornell-box.gltf"));
+    const Scene scene = load_gltf(test::source_path("scenes/cornell-box-point.gltf"));
     EmbreeAccel accel(scene);
     // Floor (0, -1, 0), white Lambertian 0.75, point light 8 cd at (0, 0.95, 0): see
     // scenes/README.md.
-    const Spectrum L = trace(scene, accel, {0, 0, 3.9f}, Vec3(0, -1, 0) - Vec3(0, 0, 3.9f));
+    // Looking straight down from inside the room (the camera's view of this point is
+    // blocked by the short block).
+    const Spectrum L = trace(scene, accel, {0, 0.5f, 0}, {0, -1, 0});
     const float expected = 0.75f / kPi * 8.0f / (1.95f * 1.95f);
     EXPECT_NEAR(L.x, expected, 1e-4f);
     EXPECT_NEAR(L.y, expected, 1e-4f);
@@ -35,7 +38,7 @@ TEST(BasicIntegrator, CornellBoxFloorBelowTheLightMatchesAnalyticValue) {
 }
 
 TEST(BasicIntegrator, RedWallReflectsOnlyRed) {
-    const Scene scene = load_gltf(test::source_path("scenes/cornell-box.gltf"));
+    const Scene scene = load_gltf(test::source_path("scenes/cornell-box-point.gltf"));
     EmbreeAccel accel(scene);
     // A point on the red wall (x = -1) at height 0.5, seen from the camera.
     const Vec3 p(-1, 0.5f, 0.6f), light(0, 0.95f, 0);

@@ -32,18 +32,24 @@ TEST(Render, LambertianPlaneUnderDirectionalLightMatchesAnalyticRadiance) {
     const float E = 3.0f, angle = kPi / 3;
     const Scene scene = lit_plane(E, angle);
     EmbreeAccel accel(scene);
+    const LightSet lights(scene, nullptr);
+    const RenderContext ctx{scene, accel, lights};
     const PerspectiveCamera camera(Transform::look_at({0, 5, 0.01f}, {0, 0, 0}, {0, 1, 0}),
                                    0.8f, 32, 24);
-    const auto integrator = make_integrator("basic", {});
     RenderOptions opt;
     opt.spp = 4;
     opt.progress = false;
-    const Image img = render(scene, accel, camera, *integrator, opt).resolve();
+    // Point and directional light are found only by light sampling, so every integrator
+    // gives the exact answer.
+    for (const char* name : {"basic", "direct", "path"}) {
+    const auto integrator = make_integrator(name, {});
+    const Image img = render(ctx, camera, *integrator, opt).resolve();
     // L = albedo / pi * E * cos(theta)
     const float expected = 0.5f / kPi * E * std::cos(angle);
     for (int y = 0; y < img.height; ++y)
         for (int x = 0; x < img.width; ++x)
-            for (int c = 0; c < 3; ++c) ASSERT_NEAR(img.at(x, y)[c], expected, 1e-5f);
+            for (int c = 0; c < 3; ++c) ASSERT_NEAR(img.at(x, y)[c], expected, 1e-5f) << name;
+    }
 }
 
 TEST(Render, PointLightFalloffIsInverseSquare) {
@@ -55,6 +61,8 @@ TEST(Render, PointLightFalloffIsInverseSquare) {
     const float I = 10, h = 2;
     scene.lights.push_back(std::make_unique<PointLight>(Vec3(0, h, 0), Spectrum(I)));
     EmbreeAccel accel(scene);
+    const LightSet lights(scene, nullptr);
+    const RenderContext ctx{scene, accel, lights};
     const auto integrator = make_integrator("basic", {});
     for (float x : {0.0f, 1.0f, 3.0f}) {
         Ray r;
@@ -62,7 +70,7 @@ TEST(Render, PointLightFalloffIsInverseSquare) {
         r.d = {0, -1, 0};
         IndependentSampler sampler(1, 0);
         sampler.start_pixel_sample({0, 0}, 0);
-        const Spectrum L = integrator->Li(r, scene, accel, sampler);
+        const Spectrum L = integrator->Li(r, ctx, sampler);
         const float d2 = x * x + h * h;
         const float cos_theta = h / std::sqrt(d2);
         EXPECT_NEAR(L.x, 1.0f / kPi * I / d2 * cos_theta, 1e-5f) << "x = " << x;
@@ -75,9 +83,11 @@ TEST(Render, ImagesAreBitwiseIdenticalAcrossThreadCounts) {
     const uint32_t cube = test::add_cube_object(scene, mat);
     test::add_instance(scene, cube, Transform::trs({0, 0.5f, 0}, Quat{0, 0.38f, 0, 0.92f}, {1, 1, 1}));
     EmbreeAccel accel(scene);
+    const LightSet lights(scene, nullptr);
+    const RenderContext ctx{scene, accel, lights};
     const PerspectiveCamera camera(Transform::look_at({2, 3, 4}, {0, 0.3f, 0}, {0, 1, 0}), 0.7f,
                                    40, 30);
-    const auto integrator = make_integrator("basic", {});
+    const auto integrator = make_integrator("path", {});
     RenderOptions opt;
     opt.spp = 5;
     opt.seed = 1234;
@@ -86,12 +96,12 @@ TEST(Render, ImagesAreBitwiseIdenticalAcrossThreadCounts) {
     for (SamplerType type : {SamplerType::Independent, SamplerType::Stratified}) {
         opt.sampler = type;
         opt.threads = 1;
-        const Image a = render(scene, accel, camera, *integrator, opt).resolve();
+        const Image a = render(ctx, camera, *integrator, opt).resolve();
         opt.threads = 2;
-        const Image b = render(scene, accel, camera, *integrator, opt).resolve();
+        const Image b = render(ctx, camera, *integrator, opt).resolve();
         opt.threads = 3;
         opt.tile_size = 5;
-        const Image c = render(scene, accel, camera, *integrator, opt).resolve();
+        const Image c = render(ctx, camera, *integrator, opt).resolve();
         opt.tile_size = 7;
         ASSERT_EQ(a.pixels.size(), b.pixels.size());
         EXPECT_EQ(0, std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * 4));
@@ -99,7 +109,7 @@ TEST(Render, ImagesAreBitwiseIdenticalAcrossThreadCounts) {
         // A different seed gives a different image (the anti-aliased cube edges differ).
         opt.seed = 99;
         opt.threads = 1;
-        const Image d = render(scene, accel, camera, *integrator, opt).resolve();
+        const Image d = render(ctx, camera, *integrator, opt).resolve();
         opt.seed = 1234;
         EXPECT_NE(0, std::memcmp(a.pixels.data(), d.pixels.data(), a.pixels.size() * 4));
     }

@@ -1,0 +1,96 @@
+#include "core/lights/environment_light.h"
+
+#include <cmath>
+#include <limits>
+
+#include "core/sampling/warp.h"
+
+namespace penumbra {
+
+EnvironmentLight::EnvironmentLight(Spectrum radiance, float scene_radius)
+    : m_constant(radiance), m_radius(scene_radius) {}
+
+EnvironmentLight::EnvironmentLight(Image image, float intensity, float rotation_degrees,
+                                   float scene_radius)
+    : m_image(std::move(image)), m_scale(intensity), m_radius(scene_radius) {
+    const float r = rotation_degrees * kPi / 180.0f;
+    m_cos_rot = std::cos(r);
+    m_sin_rot = std::sin(r);
+    const int w = m_image.width, h = m_image.height;
+    std::vector<float> func(size_t(w) * h);
+    for (int y = 0; y < h; ++y) {
+        const float sin_theta = std::sin(kPi * (y + 0.5f) / h);
+        for (int x = 0; x < w; ++x)
+            func[size_t(y) * w + x] = luminance(m_image.rgba(x, y).xyz()) * sin_theta;
+    }
+    m_dist = Distribution2D(func, w, h);
+}
+
+Vec2 EnvironmentLight::direction_to_uv(Vec3 w) const {
+    // Undo the rotation about +Y.
+    const float x = m_cos_rot * w.x - m_sin_rot * w.z;
+    const float z = m_sin_rot * w.x + m_cos_rot * w.z;
+    const float theta = std::acos(std::clamp(w.y, -1.0f, 1.0f));
+    const float phi = std::atan2(-z, -x);
+    float u = phi * kInv2Pi + 0.5f;
+    if (u >= 1) u -= 1;
+    return {u, theta * kInvPi};
+}
+
+Vec3 EnvironmentLight::uv_to_direction(Vec2 uv) const {
+    const float theta = uv.y * kPi, phi = (uv.x - 0.5f) * 2 * kPi;
+    const float s = std::sin(theta);
+    const float x = -s * std::cos(phi), z = -s * std::sin(phi), y = std::cos(theta);
+    return {m_cos_rot * x + m_sin_rot * z, y, -m_sin_rot * x + m_cos_rot * z};
+}
+
+Spectrum EnvironmentLight::Le(Vec3 w) const {
+    if (m_image.width == 0) return m_constant;
+    const Vec2 uv = direction_to_uv(w);
+    const int x = std::min(static_cast<int>(uv.x * m_image.width), m_image.width - 1);
+    const int y = std::min(static_cast<int>(uv.y * m_image.height), m_image.height - 1);
+    // Nearest texel: the same piecewise-constant function the sampler's pdf follows.
+    return m_image.rgba(x, y).xyz() * m_scale;
+}
+
+std::optional<LightSample> EnvironmentLight::sample_Li(const ShadingPoint&, Vec2 u,
+                                                       float) const {
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    if (m_image.width == 0) {
+        if (is_black(m_constant)) return std::nullopt;
+        const Vec3 wi = square_to_uniform_sphere(u);
+        return LightSample{m_constant, wi, inf, uniform_sphere_pdf(), false};
+    }
+    float pdf_uv;
+    const Vec2 uv = m_dist.sample(u, &pdf_uv);
+    const float sin_theta = std::sin(uv.y * kPi);
+    if (!(pdf_uv > 0) || !(sin_theta > 0)) return std::nullopt;
+    // Jacobian of (u, v) -> direction: 2 pi^2 sin(theta).
+    const float pdf = pdf_uv / (2 * kPi * kPi * sin_theta);
+    const Vec3 wi = uv_to_direction(uv);
+    return LightSample{Le(wi), wi, inf, pdf, false};
+}
+
+float EnvironmentLight::pdf_Li(const ShadingPoint&, Vec3 wi) const {
+    if (m_image.width == 0) return is_black(m_constant) ? 0.0f : uniform_sphere_pdf();
+    const Vec2 uv = direction_to_uv(wi);
+    const float sin_theta = std::sin(uv.y * kPi);
+    if (!(sin_theta > 0)) return 0;
+    return m_dist.pdf(uv) / (2 * kPi * kPi * sin_theta);
+}
+
+float EnvironmentLight::power() const {
+    // Flux through a disk of the scene's radius: pi r^2 times the integral of L over
+    // the sphere (mean radiance times 4 pi).
+    float mean;
+    if (m_image.width == 0) {
+        mean = luminance(m_constant);
+    } else {
+        // The distribution's integral is the mean of luminance * sin(theta) over the
+        // image; dividing by the mean of sin(theta) (2/pi) gives mean radiance.
+        mean = m_scale * m_dist.integral() / (2 * kInvPi);
+    }
+    return kPi * m_radius * m_radius * 4 * kPi * mean;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,44 @@
+// Light from infinitely far away: a constant colour or an equirectangular (lat-long)
+// image, importance-sampled with a 2D piecewise-constant distribution over the image
+// weighted by sin(theta) (PBRT's infinite area light).
+//
+// Mapping (glTF +Y up): theta = acos(y) from +Y, phi = atan2(-z, -x); the image's u =
+// phi / 2pi + 1/2 and v = theta / pi, which matches Blender's equirectangular
+// convention after its Z-up to glTF's Y-up conversion. `rotation` turns the map about +Y.
+#pragma once
+
+#include "core/image.h"
+#include "core/lights/light.h"
+#include "core/sampling/distribution.h"
+
+namespace penumbra {
+
+class EnvironmentLight final : public Light {
+public:
+    // Constant radiance in every direction.
+    EnvironmentLight(Spectrum radiance, float scene_radius);
+    // Equirectangular image (linear RGB), scaled by intensity, rotated by degrees about +Y.
+    EnvironmentLight(Image image, float intensity, float rotation_degrees, float scene_radius);
+
+    std::optional<LightSample> sample_Li(const ShadingPoint& ref, Vec2 u,
+                                         float time) const override;
+    float pdf_Li(const ShadingPoint& ref, Vec3 wi) const override;
+    float power() const override;
+    bool is_delta() const override { return false; }
+    std::string describe() const override { return "environment"; }
+    // Radiance arriving from direction w (unit, world), i.e. seen looking along w.
+    Spectrum Le(Vec3 w) const;
+
+    Vec2 direction_to_uv(Vec3 w) const;
+    Vec3 uv_to_direction(Vec2 uv) const;
+
+private:
+    Spectrum m_constant;
+    Image m_image;
+    float m_scale = 1;
+    float m_cos_rot = 1, m_sin_rot = 0;
+    float m_radius;
+    Distribution2D m_dist;
+};
+
+}  // namespace penumbra

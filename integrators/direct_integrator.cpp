@@ -1,0 +1,85 @@
+#include "integrators/direct_integrator.h"
+
+#include "integrators/direct_lighting.h"
+
+namespace penumbra {
+
+Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
+                              Sampler& sampler) const {
+    const float nl = static_cast<float>(std::max(0, m_options.light_samples));
+    const float nb = static_cast<float>(std::max(0, m_options.bsdf_samples));
+    // With one strategy switched off, the other carries full weight.
+    const LightStrategy strategy = nb == 0 ? LightStrategy::LightOnly
+                                   : nl == 0 ? LightStrategy::BsdfOnly
+                                             : LightStrategy::Mis;
+    Spectrum L(0), beta(1);
+    Ray ray = camera_ray;
+    int passes = 0;
+    for (int depth = 0;;) {
+        const std::optional<Hit> hit = ctx.accel.intersect(ray);
+        if (!hit) {
+            if (const EnvironmentLight* env = ctx.lights.environment())
+                L += beta * env->Le(normalize(ray.d));
+            break;
+        }
+        const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
+        const Vec3 wo_world = normalize(-ray.d);
+        const ShadingData sd = shade(ctx.scene, sp, wo_world);
+        if (sd.opacity < 1 && (sd.opacity <= 0 || sampler.get_1d() >= sd.opacity)) {
+            if (++passes > 256) break;
+            ray.o = offset_ray_origin(sp.p, sd.ng, ray.d);
+            ray.tmin = 0;
+            continue;
+        }
+        L += beta * sd.emission;
+        const Bsdf& bsdf = *sd.bsdf.get();
+        const Vec3 wo = sd.frame.to_local(wo_world);
+
+        for (int i = 0; i < m_options.light_samples; ++i)
+            L += beta * sample_one_light(ctx, sp, sd, wo, ray.time, sampler, strategy, nl, nb) /
+                 nl;
+
+        // BSDF samples: emission they find, MIS-weighted against the light samples. They
+        // estimate the non-specular lobes only; specular lobes are followed below.
+        for (int i = 0; i < m_options.bsdf_samples; ++i) {
+            const std::optional<BsdfSample> bs =
+                bsdf.sample(wo, sampler.get_1d(), sampler.get_2d(), Transport::Radiance);
+            if (!bs || bs->is_specular()) continue;
+            const Vec3 wi_world = sd.frame.to_world(bs->wi);
+            if ((bs->wi.z > 0) != (dot(wi_world, sd.ng) > 0)) continue;
+            const Ray r = spawn_ray(sp, wi_world, std::numeric_limits<float>::infinity(), ray.time);
+            const std::optional<Hit> h = ctx.accel.intersect(r);
+            Spectrum Le(0);
+            float w = 1;
+            if (!h) {
+                const EnvironmentLight* env = ctx.lights.environment();
+                if (!env) continue;
+                Le = env->Le(wi_world);
+                w = emission_weight(ctx, env, sp.p, sd.ng, nullptr, wi_world, bs->pdf, strategy,
+                                    nl, nb);
+            } else {
+                const SurfacePoint lp = make_surface_point(ctx.scene, r, *h);
+                const MaterialDesc& m = ctx.scene.material(lp.material);
+                if (!m.is_emissive()) continue;
+                Le = shade(ctx.scene, lp, -wi_world).emission;
+                const Light* light = ctx.lights.triangle_light(h->instance, h->mesh, h->prim);
+                w = emission_weight(ctx, light, sp.p, sd.ng, &lp.p, wi_world, bs->pdf, strategy,
+                                    nl, nb);
+            }
+            L += beta * bs->weight() * Le * (w / nb);
+        }
+        // The specular part: one more sample, continued only when it picks a specular
+        // lobe; its weight F / P(lobe) keeps that unbiased.
+        if (!bsdf.has_specular() || ++depth >= m_options.max_depth) break;
+        const std::optional<BsdfSample> specular =
+            bsdf.sample(wo, sampler.get_1d(), sampler.get_2d(), Transport::Radiance);
+        if (!specular || !specular->is_specular()) break;
+        const Vec3 wi_world = sd.frame.to_world(specular->wi);
+        if ((specular->wi.z > 0) != (dot(wi_world, sd.ng) > 0)) break;
+        beta *= specular->weight();
+        ray = spawn_ray(sp, wi_world, std::numeric_limits<float>::infinity(), ray.time);
+    }
+    return L;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,64 @@
+#include "integrators/direct_lighting.h"
+
+namespace penumbra {
+
+bool unoccluded(const RenderContext& ctx, Ray ray, Sampler& sampler) {
+    if (!ctx.has_alpha) return !ctx.accel.occluded(ray);
+    // Walk through surfaces that let light through (stochastic alpha, as on camera
+    // paths), so shadows of leaves and fences match what the camera sees.
+    for (int guard = 0; guard < 256; ++guard) {
+        const std::optional<Hit> hit = ctx.accel.intersect(ray);
+        if (!hit) return true;
+        const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
+        const float opacity = surface_opacity(ctx.scene, sp);
+        if (opacity >= 1 || sampler.get_1d() < opacity) return false;
+        // Continue beyond this surface; tmin just past its t keeps progress monotone.
+        ray.tmin = std::nextafter(hit->t, std::numeric_limits<float>::infinity());
+    }
+    return false;
+}
+
+Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
+                          const ShadingData& sd, Vec3 wo, float time, Sampler& sampler,
+                          LightStrategy strategy, float light_samples, float bsdf_samples) {
+    const float u_light = sampler.get_1d();
+    const Vec2 u = sampler.get_2d();
+    const std::optional<SampledLight> chosen = ctx.lights.sample(u_light);
+    if (!chosen) return Spectrum(0);
+    const Light& light = *chosen->light;
+    // Light-sampling estimates of non-delta lights are dropped under BSDF-only.
+    if (strategy == LightStrategy::BsdfOnly && !light.is_delta()) return Spectrum(0);
+    const ShadingPoint ref{sp.p, sd.ng};
+    const std::optional<LightSample> ls = light.sample_Li(ref, u, time);
+    if (!ls || !(ls->pdf > 0)) return Spectrum(0);
+    const Vec3 wi = sd.frame.to_local(ls->wi);
+    // Shading and geometric normals must agree on the side, or light leaks.
+    if ((wi.z > 0) != (dot(ls->wi, sd.ng) > 0)) return Spectrum(0);
+    const Bsdf& bsdf = *sd.bsdf.get();
+    const Spectrum f = bsdf.eval(wo, wi, Transport::Radiance);
+    if (is_black(f)) return Spectrum(0);
+    if (!unoccluded(ctx, spawn_ray(sp, ls->wi, ls->dist, time), sampler)) return Spectrum(0);
+    const float light_pdf = chosen->pmf * ls->pdf;
+    float w = 1;
+    if (!ls->delta && strategy == LightStrategy::Mis)
+        w = power_heuristic(light_samples, light_pdf, bsdf_samples,
+                            bsdf.pdf(wo, wi, Transport::Radiance));
+    return f * ls->Li * (std::abs(wi.z) * w / light_pdf);
+}
+
+float emission_weight(const RenderContext& ctx, const Light* light, Vec3 prev_p, Vec3 prev_n,
+                      const Vec3* hit_p, Vec3 wi, float bsdf_pdf, LightStrategy strategy,
+                      float light_samples, float bsdf_samples) {
+    if (strategy == LightStrategy::BsdfOnly) return 1;
+    if (strategy == LightStrategy::LightOnly) return 0;
+    if (!light) return 1;  // emitter the light set does not sample
+    float light_pdf;
+    if (hit_p)
+        light_pdf = static_cast<const TriangleLight*>(light)->pdf_at(prev_p, *hit_p);
+    else
+        light_pdf = light->pdf_Li(ShadingPoint{prev_p, prev_n}, wi);
+    light_pdf *= ctx.lights.pmf(light);
+    return power_heuristic(bsdf_samples, bsdf_pdf, light_samples, light_pdf);
+}
+
+}  // namespace penumbra

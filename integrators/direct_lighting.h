@@ -1,0 +1,38 @@
+// Next-event estimation and multiple importance sampling shared by the path and direct
+// integrators (like Tungsten's TraceBase): light sampling, shadow rays through
+// alpha-blended surfaces, and the power heuristic.
+#pragma once
+
+#include "core/surface_point.h"
+#include "integrators/integrator.h"
+#include "materials/material.h"
+
+namespace penumbra {
+
+// Veach's power heuristic (beta = 2) for nf samples of density f_pdf against ng of g_pdf.
+inline float power_heuristic(float nf, float f_pdf, float ng, float g_pdf) {
+    const float f = nf * f_pdf, g = ng * g_pdf;
+    if (std::isinf(f * f)) return 1;
+    const float denom = f * f + g * g;
+    return denom > 0 ? (f * f) / denom : 0.0f;
+}
+
+// Whether the segment `ray` reaches its tmax unblocked. Surfaces with partial coverage
+// (alpha) block with probability alpha.
+bool unoccluded(const RenderContext& ctx, Ray ray, Sampler& sampler);
+
+// One light sample at the shading point, MIS-weighted against `bsdf_samples` BSDF samples
+// per `light_samples` light samples when strategy is Mis. Returns f * Li * |cos| * w / pdf.
+Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
+                          const ShadingData& sd, Vec3 wo, float time, Sampler& sampler,
+                          LightStrategy strategy, float light_samples = 1,
+                          float bsdf_samples = 1);
+
+// MIS weight for emission found by a BSDF-sampled ray that left `prev_p` with solid-angle
+// density bsdf_pdf and hit `light` (a TriangleLight at hit_p, or the environment when
+// hit_p is null).
+float emission_weight(const RenderContext& ctx, const Light* light, Vec3 prev_p, Vec3 prev_n,
+                      const Vec3* hit_p, Vec3 wi, float bsdf_pdf, LightStrategy strategy,
+                      float light_samples = 1, float bsdf_samples = 1);
+
+}  // namespace penumbra

@@ -1,0 +1,86 @@
+#include "integrators/path_integrator.h"
+
+#include "integrators/direct_lighting.h"
+
+namespace penumbra {
+
+Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
+                            Sampler& sampler) const {
+    const LightStrategy strategy = m_options.strategy;
+    Spectrum L(0), beta(1);
+    Ray ray = camera_ray;
+    // State of the previous vertex, for MIS on emitters that BSDF sampling finds.
+    bool specular_bounce = false;
+    float bsdf_pdf = 0;
+    Vec3 prev_p, prev_n;
+    int depth = 0;
+    int passes = 0;  // surfaces skipped for alpha; bounded so a stack of holes ends
+    for (;;) {
+        const std::optional<Hit> hit = ctx.accel.intersect(ray);
+        // Emission that a camera ray or a specular bounce finds can only come from BSDF
+        // sampling: no light sample could have produced it.
+        const bool unweighted = depth == 0 || specular_bounce;
+        if (!hit) {
+            if (const EnvironmentLight* env = ctx.lights.environment()) {
+                const Vec3 wi = normalize(ray.d);
+                const float w = unweighted ? 1.0f
+                                           : emission_weight(ctx, env, prev_p, prev_n, nullptr,
+                                                             wi, bsdf_pdf, strategy);
+                L += beta * env->Le(wi) * w;
+            }
+            break;
+        }
+        const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
+        const Vec3 wo_world = normalize(-ray.d);
+        const ShadingData sd = shade(ctx.scene, sp, wo_world);
+
+        // Stochastic transparency: pass through with probability 1 - opacity.
+        if (sd.opacity < 1 && (sd.opacity <= 0 || sampler.get_1d() >= sd.opacity)) {
+            if (++passes > 256) break;
+            ray.o = offset_ray_origin(sp.p, sd.ng, ray.d);
+            ray.tmin = 0;
+            continue;
+        }
+
+        if (!is_black(sd.emission)) {
+            float w = 1;
+            if (!unweighted) {
+                const Light* light = ctx.lights.triangle_light(hit->instance, hit->mesh, hit->prim);
+                w = emission_weight(ctx, light, prev_p, prev_n, &sp.p, wo_world * -1.0f,
+                                    bsdf_pdf, strategy);
+            }
+            L += beta * sd.emission * w;
+        }
+        if (depth >= m_options.max_depth) break;
+
+        const Bsdf& bsdf = *sd.bsdf.get();
+        const Vec3 wo = sd.frame.to_local(wo_world);
+        L += beta * sample_one_light(ctx, sp, sd, wo, ray.time, sampler, strategy);
+
+        const std::optional<BsdfSample> bs =
+            bsdf.sample(wo, sampler.get_1d(), sampler.get_2d(), Transport::Radiance);
+        if (!bs) break;
+        const Vec3 wi_world = sd.frame.to_world(bs->wi);
+        // Directions the geometric normal puts on the other side than the lobe would
+        // cross the surface (or leak): end the path there.
+        if ((bs->wi.z > 0) != (dot(wi_world, sd.ng) > 0)) break;
+        beta *= bs->weight();
+        specular_bounce = bs->is_specular();
+        bsdf_pdf = bs->pdf;
+        prev_p = sp.p;
+        prev_n = sd.ng;
+        ++depth;
+        if (!is_finite(beta) || is_black(beta)) break;
+
+        if (depth >= m_options.rr_depth) {
+            // Continue with probability proportional to the throughput (capped at 1).
+            const float q = std::max(0.05f, 1 - max_component(beta));
+            if (sampler.get_1d() < q) break;
+            beta /= 1 - q;
+        }
+        ray = spawn_ray(sp, wi_world, std::numeric_limits<float>::infinity(), ray.time);
+    }
+    return L;
+}
+
+}  // namespace penumbra

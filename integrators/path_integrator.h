@@ -1,0 +1,19 @@
+// Unidirectional path tracing with next-event estimation and multiple importance
+// sampling (power heuristic) between light and BSDF sampling (Veach 1997, ch. 9), and
+// Russian roulette. The strategy option turns one of the two estimators off.
+#pragma once
+
+#include "integrators/integrator.h"
+
+namespace penumbra {
+
+class PathIntegrator final : public Integrator {
+public:
+    explicit PathIntegrator(const IntegratorOptions& options) : m_options(options) {}
+    Spectrum Li(const Ray& ray, const RenderContext& ctx, Sampler& sampler) const override;
+
+private:
+    IntegratorOptions m_options;
+};
+
+}  // namespace penumbra
