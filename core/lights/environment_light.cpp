@@ -30,7 +30,8 @@ Vec2 EnvironmentLight::direction_to_uv(Vec3 w) const {
     // Undo the rotation about +Y.
     const float x = m_cos_rot * w.x - m_sin_rot * w.z;
     const float z = m_sin_rot * w.x + m_cos_rot * w.z;
-    const float theta = std::acos(std::clamp(w.y, -1.0f, 1.0f));
+    // atan2 keeps theta accurate near the poles, where acos(y) loses digits.
+    const float theta = std::atan2(std::sqrt(x * x + z * z), w.y);
     const float phi = std::atan2(-z, -x);
     float u = phi * kInv2Pi + 0.5f;
     if (u >= 1) u -= 1;
@@ -63,17 +64,19 @@ std::optional<LightSample> EnvironmentLight::sample_Li(const ShadingPoint&, Vec2
     }
     float pdf_uv;
     const Vec2 uv = m_dist.sample(u, &pdf_uv);
-    const float sin_theta = std::sin(uv.y * kPi);
-    if (!(pdf_uv > 0) || !(sin_theta > 0)) return std::nullopt;
-    // Jacobian of (u, v) -> direction: 2 pi^2 sin(theta).
-    const float pdf = pdf_uv / (2 * kPi * kPi * sin_theta);
+    if (!(pdf_uv > 0)) return std::nullopt;
     const Vec3 wi = uv_to_direction(uv);
+    // The density as pdf_Li reports it for wi, so that MIS sees one consistent value
+    // even where float round-off moves wi across a texel edge.
+    const float pdf = pdf_Li(ShadingPoint{}, wi);
+    if (!(pdf > 0) || !std::isfinite(pdf)) return std::nullopt;
     return LightSample{Le(wi), wi, inf, pdf, false};
 }
 
 float EnvironmentLight::pdf_Li(const ShadingPoint&, Vec3 wi) const {
     if (m_image.width == 0) return is_black(m_constant) ? 0.0f : uniform_sphere_pdf();
     const Vec2 uv = direction_to_uv(wi);
+    // Jacobian of (u, v) -> direction: 2 pi^2 sin(theta).
     const float sin_theta = std::sin(uv.y * kPi);
     if (!(sin_theta > 0)) return 0;
     return m_dist.pdf(uv) / (2 * kPi * kPi * sin_theta);
