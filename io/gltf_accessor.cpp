@@ -13,27 +13,43 @@ constexpr size_t kMaxUnbackedComponents = size_t(1) << 28;
 
 const char* type_name(int type) {
     switch (type) {
-        case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-        case TINYGLTF_TYPE_VEC2: return "VEC2";
-        case TINYGLTF_TYPE_VEC3: return "VEC3";
-        case TINYGLTF_TYPE_VEC4: return "VEC4";
-        case TINYGLTF_TYPE_MAT2: return "MAT2";
-        case TINYGLTF_TYPE_MAT3: return "MAT3";
-        case TINYGLTF_TYPE_MAT4: return "MAT4";
-        default: return "unknown type";
+        case TINYGLTF_TYPE_SCALAR:
+            return "SCALAR";
+        case TINYGLTF_TYPE_VEC2:
+            return "VEC2";
+        case TINYGLTF_TYPE_VEC3:
+            return "VEC3";
+        case TINYGLTF_TYPE_VEC4:
+            return "VEC4";
+        case TINYGLTF_TYPE_MAT2:
+            return "MAT2";
+        case TINYGLTF_TYPE_MAT3:
+            return "MAT3";
+        case TINYGLTF_TYPE_MAT4:
+            return "MAT4";
+        default:
+            return "unknown type";
     }
 }
 
 const char* component_name(int component_type) {
     switch (component_type) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE: return "byte";
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "unsigned byte";
-        case TINYGLTF_COMPONENT_TYPE_SHORT: return "short";
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "unsigned short";
-        case TINYGLTF_COMPONENT_TYPE_INT: return "int";
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "unsigned int";
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: return "float";
-        default: return "unknown component type";
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+            return "byte";
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return "unsigned byte";
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+            return "short";
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return "unsigned short";
+        case TINYGLTF_COMPONENT_TYPE_INT:
+            return "int";
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+            return "unsigned int";
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            return "float";
+        default:
+            return "unknown component type";
     }
 }
 
@@ -71,15 +87,19 @@ float to_float(const uint8_t* p, int component_type, bool normalized) {
             const double v = load<uint32_t>(p);
             return float(normalized ? v / 4294967295.0 : v);
         }
-        default: return load<float>(p);
+        default:
+            return load<float>(p);
     }
 }
 
 uint32_t to_uint(const uint8_t* p, int component_type, bool) {
     switch (component_type) {
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return load<uint8_t>(p);
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return load<uint16_t>(p);
-        default: return load<uint32_t>(p);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return load<uint8_t>(p);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return load<uint16_t>(p);
+        default:
+            return load<uint32_t>(p);
     }
 }
 
@@ -103,12 +123,11 @@ const uint8_t* checked_bytes(const GltfContext& ctx, const std::string& user, in
     // Last element ends at offset + stride * (count - 1) + elem_size; compared in a
     // form that cannot overflow.
     const size_t len = bv.byteLength;
-    if (offset > len || elem_size > len - offset ||
-        count - 1 > (len - offset - elem_size) / stride)
+    if (offset > len || elem_size > len - offset || count - 1 > (len - offset - elem_size) / stride)
         ctx.fail(user, "byteOffset " + std::to_string(offset) + " + " + std::to_string(count) +
                            " elements of " + std::to_string(elem_size) + " bytes, stride " +
-                           std::to_string(stride) + ", exceed bufferView[" +
-                           std::to_string(view) + "] of " + std::to_string(len) + " bytes");
+                           std::to_string(stride) + ", exceed bufferView[" + std::to_string(view) +
+                           "] of " + std::to_string(len) + " bytes");
     return m.buffers[size_t(bv.buffer)].data.data() + bv.byteOffset + offset;
 }
 
@@ -131,20 +150,20 @@ void apply_sparse(const GltfContext& ctx, int index, Convert convert, std::vecto
     const size_t csize = size_t(component_size(a.componentType));
     const size_t isize = size_t(component_size(index_type));
     // Sparse indices and values are tightly packed (glTF 2.0, section 3.6.2.3).
-    const uint8_t* idx = checked_bytes(ctx, user + ".indices", s.indices.bufferView,
-                                       size_t(std::max(0, s.indices.byteOffset)),
-                                       size_t(s.count), isize, isize);
+    const uint8_t* idx =
+        checked_bytes(ctx, user + ".indices", s.indices.bufferView,
+                      size_t(std::max(0, s.indices.byteOffset)), size_t(s.count), isize, isize);
     const uint8_t* val = checked_bytes(ctx, user + ".values", s.values.bufferView,
-                                       size_t(std::max(0, s.values.byteOffset)),
-                                       size_t(s.count), n * csize, n * csize);
+                                       size_t(std::max(0, s.values.byteOffset)), size_t(s.count),
+                                       n * csize, n * csize);
     for (size_t k = 0; k < size_t(s.count); ++k) {
         const uint32_t target = to_uint(idx + k * isize, index_type, false);
         if (target >= a.count)
             ctx.fail(user, "index " + std::to_string(target) + " out of range (" +
                                std::to_string(a.count) + " elements)");
         for (size_t c = 0; c < n; ++c)
-            out[target * n + c] = convert(val + k * n * csize + c * csize, a.componentType,
-                                          a.normalized);
+            out[target * n + c] =
+                convert(val + k * n * csize + c * csize, a.componentType, a.normalized);
     }
 }
 
@@ -162,7 +181,7 @@ std::vector<T> read_all(const GltfContext& ctx, int index, Convert convert) {
 
     std::vector<T> out;
     const size_t elem_size = n * csize;
-    if (a.bufferView < 0) {
+    if (a.bufferView == -1) {
         if (a.count > kMaxUnbackedComponents / n)
             ctx.fail(user, "count " + std::to_string(a.count) +
                                " is too large for an accessor without a bufferView");
@@ -192,27 +211,39 @@ std::vector<T> read_all(const GltfContext& ctx, int index, Convert convert) {
 
 int component_count(int type) {
     switch (type) {
-        case TINYGLTF_TYPE_SCALAR: return 1;
-        case TINYGLTF_TYPE_VEC2: return 2;
-        case TINYGLTF_TYPE_VEC3: return 3;
-        case TINYGLTF_TYPE_VEC4: return 4;
-        case TINYGLTF_TYPE_MAT2: return 4;
-        case TINYGLTF_TYPE_MAT3: return 9;
-        case TINYGLTF_TYPE_MAT4: return 16;
-        default: return 0;
+        case TINYGLTF_TYPE_SCALAR:
+            return 1;
+        case TINYGLTF_TYPE_VEC2:
+            return 2;
+        case TINYGLTF_TYPE_VEC3:
+            return 3;
+        case TINYGLTF_TYPE_VEC4:
+            return 4;
+        case TINYGLTF_TYPE_MAT2:
+            return 4;
+        case TINYGLTF_TYPE_MAT3:
+            return 9;
+        case TINYGLTF_TYPE_MAT4:
+            return 16;
+        default:
+            return 0;
     }
 }
 
 int component_size(int component_type) {
     switch (component_type) {
         case TINYGLTF_COMPONENT_TYPE_BYTE:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return 1;
         case TINYGLTF_COMPONENT_TYPE_SHORT:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return 2;
         case TINYGLTF_COMPONENT_TYPE_INT:
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-        default: return 0;  // includes tinygltf's DOUBLE, which glTF 2.0 does not allow
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            return 4;
+        default:
+            return 0;  // includes tinygltf's DOUBLE, which glTF 2.0 does not allow
     }
 }
 
@@ -228,8 +259,7 @@ const tinygltf::Accessor& get_accessor(const GltfContext& ctx, const std::string
     return ctx.model.accessors[size_t(index)];
 }
 
-std::vector<uint8_t> buffer_view_bytes(const GltfContext& ctx, const std::string& user,
-                                       int view) {
+std::vector<uint8_t> buffer_view_bytes(const GltfContext& ctx, const std::string& user, int view) {
     const uint8_t* p = checked_bytes(ctx, user, view, 0, 1, 0, 1);
     const size_t len = ctx.model.bufferViews[size_t(view)].byteLength;
     return p ? std::vector<uint8_t>(p, p + len) : std::vector<uint8_t>();

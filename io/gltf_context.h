@@ -26,8 +26,8 @@ struct GltfContext {
 
     // Checks that `index` refers to one of `count` items of the kind `what` (e.g.
     // "material"), referenced from `element`; throws naming both otherwise.
-    void check_index(const std::string& element, const char* what, int index,
-                     size_t count, const char* plural) const {
+    void check_index(const std::string& element, const char* what, int index, size_t count,
+                     const char* plural) const {
         if (index < 0 || size_t(index) >= count)
             fail(element, std::string(what) + " index " + std::to_string(index) +
                               " out of range (" + std::to_string(count) + " " + plural + ")");

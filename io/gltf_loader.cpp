@@ -19,9 +19,9 @@ namespace {
 // Extensions whose meaning we implement. KHR_texture_transform is not among them:
 // TextureRef carries no UV transform, so a file that requires it is refused and one that
 // merely uses it renders with untransformed UVs (after a warning).
-const char* const kSupportedExtensions[] = {
-    "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_ior",
-    "KHR_materials_specular", "KHR_mesh_quantization"};
+const char* const kSupportedExtensions[] = {"KHR_lights_punctual",
+                                            "KHR_materials_emissive_strength", "KHR_materials_ior",
+                                            "KHR_materials_specular", "KHR_mesh_quantization"};
 
 bool is_supported(const std::string& name) {
     for (const char* s : kSupportedExtensions)

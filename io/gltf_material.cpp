@@ -27,8 +27,8 @@ public:
         if (texcoord < 0) m_ctx.fail(el, "texCoord " + std::to_string(texcoord) + " is negative");
         // TriangleMesh keeps TEXCOORD_0 and _1 only.
         if (texcoord > 1) {
-            m_ctx.warn(el, "TEXCOORD_" + std::to_string(texcoord) +
-                               " is not supported; using TEXCOORD_0");
+            m_ctx.warn(
+                el, "TEXCOORD_" + std::to_string(texcoord) + " is not supported; using TEXCOORD_0");
             texcoord = 0;
         }
         r.texture = texture_index(texture, encoding);
@@ -85,9 +85,12 @@ private:
 
     WrapMode wrap_mode(const std::string& el, const char* what, int mode) const {
         switch (mode) {
-            case TINYGLTF_TEXTURE_WRAP_REPEAT: return WrapMode::Repeat;
-            case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return WrapMode::ClampToEdge;
-            case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return WrapMode::MirroredRepeat;
+            case TINYGLTF_TEXTURE_WRAP_REPEAT:
+                return WrapMode::Repeat;
+            case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
+                return WrapMode::ClampToEdge;
+            case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
+                return WrapMode::MirroredRepeat;
             default:
                 m_ctx.fail(el, std::string(what) + " " + std::to_string(mode) +
                                    " is not a glTF wrap mode");
@@ -129,16 +132,15 @@ MaterialDesc load_material(const GltfContext& ctx, size_t i, TextureTable& textu
 
     const tinygltf::PbrMetallicRoughness& pbr = gm.pbrMetallicRoughness;
     const std::string pel = el + ".pbrMetallicRoughness";
-    if (pbr.baseColorFactor.size() != 4)
-        ctx.fail(pel, "baseColorFactor must have 4 numbers");
+    if (pbr.baseColorFactor.size() != 4) ctx.fail(pel, "baseColorFactor must have 4 numbers");
     for (int c = 0; c < 4; ++c) d.base_color[c] = float(pbr.baseColorFactor[size_t(c)]);
     d.base_color_texture = textures.ref(pel + ".baseColorTexture", pbr.baseColorTexture.index,
                                         pbr.baseColorTexture.texCoord, ImageEncoding::Srgb);
     d.metallic = float(pbr.metallicFactor);
     d.roughness = float(pbr.roughnessFactor);
-    d.metallic_roughness_texture = textures.ref(
-        pel + ".metallicRoughnessTexture", pbr.metallicRoughnessTexture.index,
-        pbr.metallicRoughnessTexture.texCoord, ImageEncoding::Linear);
+    d.metallic_roughness_texture =
+        textures.ref(pel + ".metallicRoughnessTexture", pbr.metallicRoughnessTexture.index,
+                     pbr.metallicRoughnessTexture.texCoord, ImageEncoding::Linear);
 
     d.normal_texture = textures.ref(el + ".normalTexture", gm.normalTexture.index,
                                     gm.normalTexture.texCoord, ImageEncoding::Linear);
@@ -164,10 +166,9 @@ MaterialDesc load_material(const GltfContext& ctx, size_t i, TextureTable& textu
 
     const std::string xel = el + ".extensions.";
     const tinygltf::Value& strength = extension(gm, "KHR_materials_emissive_strength");
-    d.emissive_strength = number(ctx, xel + "KHR_materials_emissive_strength", strength,
-                                 "emissiveStrength", 1.0f);
-    d.ior = number(ctx, xel + "KHR_materials_ior", extension(gm, "KHR_materials_ior"), "ior",
-                   1.5f);
+    d.emissive_strength =
+        number(ctx, xel + "KHR_materials_emissive_strength", strength, "emissiveStrength", 1.0f);
+    d.ior = number(ctx, xel + "KHR_materials_ior", extension(gm, "KHR_materials_ior"), "ior", 1.5f);
     const tinygltf::Value& spec = extension(gm, "KHR_materials_specular");
     const std::string sel = xel + "KHR_materials_specular";
     d.specular = number(ctx, sel, spec, "specularFactor", 1.0f);

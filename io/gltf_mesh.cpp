@@ -34,27 +34,24 @@ const AttributeRule kPosition{
     [](const tinygltf::Accessor& a) {
         return a.type == TINYGLTF_TYPE_VEC3 && (is_float(a) || is_8_16(a));
     }};
-const AttributeRule kNormal{"VEC3 of float, or of normalized signed byte or short",
-                            [](const tinygltf::Accessor& a) {
-                                return a.type == TINYGLTF_TYPE_VEC3 &&
-                                       (is_float(a) || (is_signed_8_16(a) && a.normalized));
-                            }};
-const AttributeRule kTangent{"VEC4 of float, or of normalized signed byte or short",
-                             [](const tinygltf::Accessor& a) {
-                                 return a.type == TINYGLTF_TYPE_VEC4 &&
-                                        (is_float(a) || (is_signed_8_16(a) && a.normalized));
-                             }};
-const AttributeRule kTexcoord{"VEC2 of float, or of (normalized) byte or short",
-                              [](const tinygltf::Accessor& a) {
-                                  return a.type == TINYGLTF_TYPE_VEC2 &&
-                                         (is_float(a) || is_8_16(a));
-                              }};
+const AttributeRule kNormal{
+    "VEC3 of float, or of normalized signed byte or short", [](const tinygltf::Accessor& a) {
+        return a.type == TINYGLTF_TYPE_VEC3 && (is_float(a) || (is_signed_8_16(a) && a.normalized));
+    }};
+const AttributeRule kTangent{
+    "VEC4 of float, or of normalized signed byte or short", [](const tinygltf::Accessor& a) {
+        return a.type == TINYGLTF_TYPE_VEC4 && (is_float(a) || (is_signed_8_16(a) && a.normalized));
+    }};
+const AttributeRule kTexcoord{
+    "VEC2 of float, or of (normalized) byte or short", [](const tinygltf::Accessor& a) {
+        return a.type == TINYGLTF_TYPE_VEC2 && (is_float(a) || is_8_16(a));
+    }};
 const AttributeRule kColor{
     "VEC3 or VEC4 of float, or of normalized unsigned byte or short",
     [](const tinygltf::Accessor& a) {
-        const bool unorm = a.normalized &&
-                           (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                            a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+        const bool unorm =
+            a.normalized && (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                             a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
         return (a.type == TINYGLTF_TYPE_VEC3 || a.type == TINYGLTF_TYPE_VEC4) &&
                (is_float(a) || unorm);
     }};
@@ -117,14 +114,14 @@ void make_flat(TriangleMesh& mesh) {
 
 // Index list of `mode` to a triangle list. Strips alternate the order of odd triangles
 // so that all keep the first one's winding (glTF 2.0, section 3.7.2.1).
-std::vector<uint32_t> to_triangle_list(const GltfContext& ctx, const std::string& el,
-                                       int mode, const std::vector<uint32_t>& in) {
+std::vector<uint32_t> to_triangle_list(const GltfContext& ctx, const std::string& el, int mode,
+                                       const std::vector<uint32_t>& in) {
     std::vector<uint32_t> out;
     if (mode == TINYGLTF_MODE_TRIANGLES) {
         if (in.size() % 3 != 0)
             ctx.warn(el, "index count " + std::to_string(in.size()) +
-                             " is not a multiple of 3; the last " +
-                             std::to_string(in.size() % 3) + " are ignored");
+                             " is not a multiple of 3; the last " + std::to_string(in.size() % 3) +
+                             " are ignored");
         out.assign(in.begin(), in.begin() + (in.size() / 3) * 3);
         return out;
     }
@@ -152,8 +149,8 @@ std::vector<Vec3> to_vec3(const std::vector<float>& v) {
 
 // One triangle primitive; false when it has no triangles to render (skipped, with a
 // warning).
-bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim,
-                     const std::string& el, TriangleMesh& mesh) {
+bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, const std::string& el,
+                     TriangleMesh& mesh) {
     const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
     if (mode < TINYGLTF_MODE_POINTS || mode > TINYGLTF_MODE_TRIANGLE_FAN)
         ctx.fail(el, "mode " + std::to_string(mode) + " is not a glTF primitive mode");
@@ -179,8 +176,7 @@ bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim,
     mesh.normals = to_vec3(reader.read("NORMAL", kNormal, n));
     for (size_t i = 0; i < mesh.normals.size(); ++i) {
         Vec3& nrm = mesh.normals[i];
-        if (!is_finite(nrm))
-            ctx.fail(el, "NORMAL element " + std::to_string(i) + " is not finite");
+        if (!is_finite(nrm)) ctx.fail(el, "NORMAL element " + std::to_string(i) + " is not finite");
         // Quantized normals are only approximately unit length.
         if (length_squared(nrm) > 0) nrm = normalize(nrm);
     }
@@ -213,8 +209,8 @@ bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim,
         indices = read_uints(ctx, prim.indices);
         for (uint32_t i : indices)
             if (i >= n)
-                ctx.fail(el, "index " + std::to_string(i) + " out of range (" +
-                                 std::to_string(n) + " vertices)");
+                ctx.fail(el, "index " + std::to_string(i) + " out of range (" + std::to_string(n) +
+                                 " vertices)");
     } else {
         indices.resize(n);
         std::iota(indices.begin(), indices.end(), 0u);

@@ -28,8 +28,7 @@ bool all_finite(const std::vector<double>& v) {
 }
 
 // glTF 2.0, section 3.5.3: `matrix`, or T * R * S with identity defaults.
-Transform local_transform(const GltfContext& ctx, const std::string& el,
-                          const tinygltf::Node& n) {
+Transform local_transform(const GltfContext& ctx, const std::string& el, const tinygltf::Node& n) {
     if (!all_finite(n.matrix) || !all_finite(n.translation) || !all_finite(n.rotation) ||
         !all_finite(n.scale))
         ctx.fail(el, "transform is not finite");
@@ -121,8 +120,7 @@ int node_light(const GltfContext& ctx, const std::string& el, const tinygltf::No
 
 // KHR_lights_punctual: intensity in candela (point, spot) or lux (directional), times
 // colour. `range` is ignored: we keep the physical inverse-square falloff everywhere.
-std::unique_ptr<Light> make_light(const GltfContext& ctx, const LightNode& ln,
-                                  float scene_radius) {
+std::unique_ptr<Light> make_light(const GltfContext& ctx, const LightNode& ln, float scene_radius) {
     const tinygltf::Light& gl = ctx.model.lights[size_t(ln.light)];
     const std::string el = "extensions.KHR_lights_punctual." + element("lights", size_t(ln.light));
     Spectrum color(1, 1, 1);
@@ -143,8 +141,9 @@ std::unique_ptr<Light> make_light(const GltfContext& ctx, const LightNode& ln,
     if (gl.type == "spot") {
         const double inner = gl.spot.innerConeAngle, outer = gl.spot.outerConeAngle;
         if (!(inner >= 0 && inner <= outer && outer <= kPi / 2 + 1e-6))
-            ctx.fail(el, "spot cone angles must satisfy 0 <= innerConeAngle <= "
-                         "outerConeAngle <= pi/2");
+            ctx.fail(el,
+                     "spot cone angles must satisfy 0 <= innerConeAngle <= "
+                     "outerConeAngle <= pi/2");
         return std::make_unique<SpotLight>(position, normalize(axis), I, float(inner),
                                            float(outer));
     }
@@ -205,8 +204,7 @@ void load_nodes(const GltfContext& ctx, int scene_index, Scene& scene) {
     }
 
     const Bounds3 bounds = scene.bounds();
-    const float radius =
-        bounds.empty() ? 1.0f : std::max(1.0f, 0.5f * length(bounds.diagonal()));
+    const float radius = bounds.empty() ? 1.0f : std::max(1.0f, 0.5f * length(bounds.diagonal()));
     for (const LightNode& ln : lights) scene.lights.push_back(make_light(ctx, ln, radius));
 }
 

@@ -4,6 +4,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -15,6 +16,8 @@
 namespace penumbra {
 
 namespace {
+
+constexpr size_t kMaxPixels = size_t(1) << 28;  // 16k x 16k
 
 // OIIO picks a reader from the file name's extension; bytes from a glTF buffer have
 // no name, so the format is recognised from its signature instead.
@@ -59,10 +62,13 @@ Image decode_image(const std::vector<uint8_t>& bytes, const std::string& name,
     if (bytes.empty()) throw SceneError(name + ": cannot decode image: no data");
     const char* ext = sniff_extension(bytes);
     if (!ext) {
-        // Not a signature we know: let OIIO guess from the name's extension.
+        // Not a signature we know: let OIIO go by the name's extension, if it has one.
         const size_t dot = name.find_last_of('.');
-        if (dot == std::string::npos)
-            throw SceneError(name + ": cannot decode image: unrecognised format");
+        const bool has_ext = dot != std::string::npos && name.size() - dot >= 2 &&
+                             name.size() - dot <= 6 &&
+                             std::all_of(name.begin() + long(dot) + 1, name.end(),
+                                         [](char c) { return std::isalnum((unsigned char)c); });
+        if (!has_ext) throw SceneError(name + ": cannot decode image: unrecognised format");
         ext = name.c_str() + dot + 1;
     }
     OIIO::Filesystem::IOMemReader proxy(bytes.data(), bytes.size());
@@ -76,6 +82,10 @@ Image decode_image(const std::vector<uint8_t>& bytes, const std::string& name,
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
         throw SceneError(name + ": cannot decode image: empty image");
+    // A corrupt header can claim any size; refuse rather than die allocating it.
+    if (size_t(spec.width) * size_t(spec.height) > kMaxPixels)
+        throw SceneError(name + ": cannot decode image: " + std::to_string(spec.width) + "x" +
+                         std::to_string(spec.height) + " is too large");
     // More than RGBA (e.g. EXR layers) is cut to the first four channels.
     const int channels = std::min(spec.nchannels, 4);
     Image img(spec.width, spec.height, channels);
@@ -97,7 +107,8 @@ Image decode_image(const std::vector<uint8_t>& bytes, const std::string& name,
 Image read_image(const std::string& path, ImageEncoding encoding) {
     std::error_code ec;
     std::ifstream file(path, std::ios::binary);
-    if (!std::filesystem::is_regular_file(path, ec) || !file) throw SceneError(path + ": cannot open file");
+    if (!std::filesystem::is_regular_file(path, ec) || !file)
+        throw SceneError(path + ": cannot open file");
     std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(file)),
                                std::istreambuf_iterator<char>());
     if (file.bad()) throw SceneError(path + ": cannot read file");
