@@ -63,7 +63,7 @@ void add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(CLI::IsMember(integrator_list));
     cmd->add_option("--sampler", o.sampler, "Pixel sampler")
         ->capture_default_str()
-        ->check(CLI::IsMember({"independent", "stratified"}));
+        ->check(CLI::IsMember({"independent", "stratified", "sobol"}));
     cmd->add_option("--filter", o.filter, "Pixel reconstruction filter")
         ->capture_default_str()
         ->check(CLI::IsMember({"box", "gaussian", "blackman-harris"}));

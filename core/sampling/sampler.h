@@ -75,13 +75,41 @@ private:
     Rng m_rng;
 };
 
+// Low discrepancy: each sample dimension (or pair) is an Owen-scrambled (0,2)-sequence,
+// the first two Sobol dimensions, with the sample index shuffled per pixel and
+// dimension (pbrt-v4's PaddedSobolSampler with Burley 2020's hash-based Owen
+// scrambling). For power-of-two spp every pair of dimensions forms a (0,m,2)-net.
+class SobolSampler final : public Sampler {
+public:
+    SobolSampler(uint32_t spp, uint64_t seed) : Sampler(spp, seed) {}
+    void start_pixel_sample(PixelCoord p, uint32_t sample_index) override;
+    float get_1d() override;
+    Vec2 get_2d() override;
+    Vec2 get_pixel_2d() override { return get_2d(); }
+    std::unique_ptr<Sampler> clone() const override {
+        return std::make_unique<SobolSampler>(*this);
+    }
+
+private:
+    uint64_t dimension_hash() const;
+    PixelCoord m_pixel;
+    uint32_t m_index = 0;
+    uint32_t m_dimension = 0;
+};
+
+// The (0,2)-sequence: van der Corput and the second Sobol dimension, as 32-bit fractions.
+uint32_t van_der_corput_bits(uint32_t i);
+uint32_t sobol_second_dimension_bits(uint32_t i);
+// Owen scrambling of a 32-bit fraction (Burley 2020's nested uniform scramble).
+uint32_t owen_scramble(uint32_t v, uint32_t seed);
+
 // Element i of a pseudo-random permutation of [0, n) selected by key (Kensler 2013,
 // "Correlated Multi-Jittered Sampling", the cycle-walking hash permutation).
 uint32_t permutation_element(uint32_t i, uint32_t n, uint32_t key);
 
-enum class SamplerType { Independent, Stratified };
+enum class SamplerType { Independent, Stratified, Sobol };
 std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t seed);
-// "independent" | "stratified"; throws std::invalid_argument otherwise.
+// "independent" | "stratified" | "sobol"; throws std::invalid_argument otherwise.
 SamplerType parse_sampler_type(const std::string& name);
 
 }  // namespace penumbra

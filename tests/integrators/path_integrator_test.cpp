@@ -77,7 +77,8 @@ TEST(PathIntegrator, FurnaceBoxRadianceIsEmissionOverOneMinusAlbedo) {
     const auto s = furnace_box(Le, a);
     for (LightStrategy strategy :
          {LightStrategy::Mis, LightStrategy::BsdfOnly, LightStrategy::LightOnly}) {
-        for (SamplerType type : {SamplerType::Independent, SamplerType::Stratified}) {
+        for (SamplerType type :
+             {SamplerType::Independent, SamplerType::Stratified, SamplerType::Sobol}) {
             IntegratorOptions opt;
             opt.max_depth = 200;
             opt.strategy = strategy;
