@@ -39,7 +39,8 @@ uint32_t permutation_element(uint32_t i, uint32_t l, uint32_t p) {
         i &= w;
         i ^= i >> 5;
     } while (i >= l);
-    return (i + p) % l;
+    // Kensler's (i + p) % l wraps at 2^32 when p > 2^32 - l and is then no permutation.
+    return (i + p % l) % l;
 }
 
 StratifiedSampler::StratifiedSampler(uint32_t spp, uint64_t seed) : Sampler(spp, seed) {
@@ -78,12 +79,74 @@ Vec2 StratifiedSampler::get_2d() {
             std::min((sy + dy) / m_ny, 0x1.fffffep-1f)};
 }
 
+uint32_t van_der_corput_bits(uint32_t i) {
+    i = (i << 16) | (i >> 16);
+    i = ((i & 0x00ff00ffu) << 8) | ((i & 0xff00ff00u) >> 8);
+    i = ((i & 0x0f0f0f0fu) << 4) | ((i & 0xf0f0f0f0u) >> 4);
+    i = ((i & 0x33333333u) << 2) | ((i & 0xccccccccu) >> 2);
+    i = ((i & 0x55555555u) << 1) | ((i & 0xaaaaaaaau) >> 1);
+    return i;
+}
+
+uint32_t sobol_second_dimension_bits(uint32_t i) {
+    // Generator matrix of Sobol's second dimension: column k is v_k = v_{k-1} ^ (v_{k-1} >> 1).
+    uint32_t r = 0;
+    for (uint32_t v = 1u << 31; i; i >>= 1, v ^= v >> 1)
+        if (i & 1) r ^= v;
+    return r;
+}
+
+uint32_t owen_scramble(uint32_t v, uint32_t seed) {
+    // Laine-Karras style hash on the bit-reversed value: each output bit depends only on
+    // the more significant bits of v, which is what makes it an Owen scramble.
+    uint32_t x = van_der_corput_bits(v);
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return van_der_corput_bits(x);
+}
+
+void SobolSampler::start_pixel_sample(PixelCoord p, uint32_t sample_index) {
+    m_pixel = p;
+    m_index = sample_index;
+    m_dimension = 0;
+}
+
+uint64_t SobolSampler::dimension_hash() const {
+    return hash_values(m_seed, m_pixel.x, m_pixel.y, m_dimension, 0x50b01);
+}
+
+namespace {
+float bits_to_float(uint32_t v) { return std::min(v * 0x1p-32f, 0x1.fffffep-1f); }
+}  // namespace
+
+float SobolSampler::get_1d() {
+    const uint64_t h = dimension_hash();
+    ++m_dimension;
+    const uint32_t index = permutation_element(m_index, m_spp, static_cast<uint32_t>(h));
+    return bits_to_float(owen_scramble(van_der_corput_bits(index), static_cast<uint32_t>(h >> 32)));
+}
+
+Vec2 SobolSampler::get_2d() {
+    const uint64_t h = dimension_hash();
+    m_dimension += 2;
+    const uint32_t index = permutation_element(m_index, m_spp, static_cast<uint32_t>(h));
+    const uint64_t h2 = mix_bits(h);
+    return {bits_to_float(owen_scramble(van_der_corput_bits(index), static_cast<uint32_t>(h >> 32))),
+            bits_to_float(owen_scramble(sobol_second_dimension_bits(index),
+                                        static_cast<uint32_t>(h2)))};
+}
+
 std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t seed) {
     switch (type) {
         case SamplerType::Independent:
             return std::make_unique<IndependentSampler>(spp, seed);
         case SamplerType::Stratified:
             return std::make_unique<StratifiedSampler>(spp, seed);
+        case SamplerType::Sobol:
+            return std::make_unique<SobolSampler>(spp, seed);
     }
     throw std::invalid_argument("unknown sampler type");
 }
@@ -91,8 +154,9 @@ std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t s
 SamplerType parse_sampler_type(const std::string& name) {
     if (name == "independent") return SamplerType::Independent;
     if (name == "stratified") return SamplerType::Stratified;
+    if (name == "sobol") return SamplerType::Sobol;
     throw std::invalid_argument("unknown sampler '" + name +
-                                "' (expected independent or stratified)");
+                                "' (expected independent, stratified or sobol)");
 }
 
 }  // namespace penumbra
