@@ -14,6 +14,12 @@ int main(int argc, char** argv) {
         "penumbra: a physically based path tracer for glTF 2.0 scenes.\n"
         "Renders .gltf/.glb files to linear OpenEXR images with PNG previews."};
     app.require_subcommand(1);
+    app.footer(
+        "Examples:\n"
+        "  penumbra render scenes/cornell-box.gltf -o out/cornell-box.exr --spp 64\n"
+        "  penumbra render a.gltf b.glb --out-dir renders --width 1024 --integrator path\n"
+        "  penumbra check-accel scenes/cornell-box.gltf\n"
+        "Run 'penumbra SUBCOMMAND --help' for the options of each subcommand.");
     app.set_version_flag("--version", std::string("penumbra ") + PENUMBRA_VERSION);
 
     penumbra::RenderCommandOptions render_options;

@@ -1,5 +1,7 @@
 #include "support/scene_builder.h"
 
+#include <cmath>
+
 namespace penumbra::test {
 
 namespace {
@@ -50,6 +52,28 @@ uint32_t add_cube_object(Scene& scene, int material) {
         }
     m.material = material;
     return add_mesh_object(scene, std::move(m), "cube");
+}
+
+uint32_t add_sphere_object(Scene& scene, int material, int rings, int segments) {
+    TriangleMesh m;
+    for (int r = 0; r <= rings; ++r) {
+        const float theta = kPi * r / rings;
+        for (int s = 0; s <= segments; ++s) {
+            const float phi = 2 * kPi * s / segments;
+            const Vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
+                         -std::sin(theta) * std::sin(phi));
+            m.positions.push_back(n);
+            m.normals.push_back(n);
+        }
+    }
+    for (int r = 0; r < rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            const uint32_t a = r * (segments + 1) + s, b = a + segments + 1;
+            if (r != 0) m.indices.insert(m.indices.end(), {a, b, a + 1});
+            if (r != rings - 1) m.indices.insert(m.indices.end(), {a + 1, b, b + 1});
+        }
+    m.material = material;
+    return add_mesh_object(scene, std::move(m), "sphere");
 }
 
 uint32_t add_instance(Scene& scene, uint32_t object, const Transform& to_world) {

@@ -12,6 +12,8 @@ namespace penumbra::test {
 uint32_t add_quad_object(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, int material);
 // Adds the closed cube [-0.5, 0.5]^3 (outward winding) as an object.
 uint32_t add_cube_object(Scene& scene, int material);
+// Adds a UV sphere of radius 1 at the origin (smooth normals) as an object.
+uint32_t add_sphere_object(Scene& scene, int material, int rings = 24, int segments = 48);
 // Places object `object` with to_world; returns the instance index.
 uint32_t add_instance(Scene& scene, uint32_t object, const Transform& to_world);
 // A material that is exactly Lambertian with the given albedo.
