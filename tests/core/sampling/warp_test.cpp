@@ -1,0 +1,177 @@
+#include "core/sampling/warp.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "support/chi2.h"
+
+namespace penumbra {
+namespace {
+
+using test::Chi2Result;
+
+// Chi-square tests in this file, for the Sidak correction.
+constexpr int kChi2Tests = 11;
+const double kLevel = test::sidak_significance(0.01, kChi2Tests);
+
+Vec2 next_2d(Rng& rng) { return {rng.next_float(), rng.next_float()}; }
+
+Chi2Result sphere_test(Vec3 (*warp)(Vec2), test::DirectionPdf pdf, bool hemisphere, uint64_t seed) {
+    test::SphereChi2Options o;
+    o.hemisphere = hemisphere;
+    o.seed = seed;
+    o.significance = kLevel;
+    return test::chi2_sphere([&](Rng& rng) { return std::optional<Vec3>(warp(next_2d(rng))); }, pdf,
+                             o);
+}
+
+// The regular polygon whose first vertex is at angle `rotation`.
+struct Polygon {
+    std::vector<Vec2> v;
+    Polygon(int blades, float rotation) {
+        for (int k = 0; k < blades; ++k) {
+            const double a = rotation + 2 * M_PI * k / blades;
+            v.emplace_back(float(std::cos(a)), float(std::sin(a)));
+        }
+    }
+    bool contains(Vec2 p) const {
+        for (size_t k = 0; k < v.size(); ++k) {
+            const Vec2 a = v[k], e = v[(k + 1) % v.size()] - a;
+            if (e.x * (p.y - a.y) - e.y * (p.x - a.x) < 0) return false;
+        }
+        return true;
+    }
+};
+
+TEST(WarpChi2, UniformSphere) {
+    const Chi2Result r = sphere_test(
+        square_to_uniform_sphere, [](Vec3) { return double(uniform_sphere_pdf()); }, false, 1);
+    EXPECT_TRUE(r.passed) << r.report;
+    EXPECT_NEAR(r.pdf_integral, 1.0, 1e-5);
+}
+
+TEST(WarpChi2, UniformHemisphere) {
+    const Chi2Result r = sphere_test(
+        square_to_uniform_hemisphere, [](Vec3 w) { return double(uniform_hemisphere_pdf(w)); },
+        true, 2);
+    EXPECT_TRUE(r.passed) << r.report;
+    EXPECT_NEAR(r.pdf_integral, 1.0, 1e-5);
+}
+
+TEST(WarpChi2, CosineHemisphere) {
+    const Chi2Result r = sphere_test(
+        square_to_cosine_hemisphere, [](Vec3 w) { return double(cosine_hemisphere_pdf(w)); }, true,
+        3);
+    EXPECT_TRUE(r.passed) << r.report;
+    EXPECT_NEAR(r.pdf_integral, 1.0, 1e-5);
+}
+
+TEST(WarpChi2, UniformCone) {
+    // Narrow, wide and wider than a hemisphere (4 tests with the one below).
+    for (float cos_max : {0.97f, 0.6f, 0.0f, -0.45f}) {
+        test::SphereChi2Options o;
+        o.seed = 4;
+        o.significance = kLevel;
+        const Chi2Result r = test::chi2_sphere(
+            [&](Rng& rng) {
+                return std::optional<Vec3>(square_to_uniform_cone(next_2d(rng), cos_max));
+            },
+            [&](Vec3 w) { return w.z >= cos_max ? double(uniform_cone_pdf(cos_max)) : 0.0; }, o);
+        EXPECT_TRUE(r.passed) << "cos_max " << cos_max << "\n" << r.report;
+        EXPECT_NEAR(r.pdf_integral, 1.0, 1e-5) << "cos_max " << cos_max;
+    }
+}
+
+TEST(WarpChi2, ConcentricDisk) {
+    test::PlanarChi2Options o;
+    o.lo = {-1, -1};
+    o.significance = kLevel;
+    o.seed = 5;
+    const Chi2Result r = test::chi2_planar(
+        [](Rng& rng) { return std::optional<Vec2>(square_to_concentric_disk(next_2d(rng))); },
+        [](Vec2 p) { return p.x * p.x + p.y * p.y <= 1 ? 1 / M_PI : 0.0; }, o);
+    EXPECT_TRUE(r.passed) << r.report;
+    EXPECT_NEAR(r.pdf_integral, 1.0, 2e-3);
+}
+
+TEST(WarpChi2, Polygon) {
+    for (int blades : {5, 6}) {
+        const float rotation = 0.3f;
+        const Polygon polygon(blades, rotation);
+        test::PlanarChi2Options o;
+        o.lo = {-1, -1};
+        o.significance = kLevel;
+        o.seed = 6 + blades;
+        const Chi2Result r = test::chi2_planar(
+            [&](Rng& rng) {
+                return std::optional<Vec2>(square_to_polygon(next_2d(rng), blades, rotation));
+            },
+            [&](Vec2 p) { return polygon.contains(p) ? 1.0 / polygon_area(blades) : 0.0; }, o);
+        EXPECT_TRUE(r.passed) << blades << " blades\n" << r.report;
+        EXPECT_NEAR(r.pdf_integral, 1.0, 2e-3) << blades << " blades";
+    }
+}
+
+TEST(WarpChi2, Triangle) {
+    // Barycentrics (b1, b2) uniform on the lower-left half of the unit square.
+    test::PlanarChi2Options o;
+    o.significance = kLevel;
+    o.seed = 13;
+    const Chi2Result r = test::chi2_planar(
+        [](Rng& rng) { return std::optional<Vec2>(square_to_triangle(next_2d(rng))); },
+        [](Vec2 b) { return b.x + b.y <= 1 ? 2.0 : 0.0; }, o);
+    EXPECT_TRUE(r.passed) << r.report;
+    EXPECT_NEAR(r.pdf_integral, 1.0, 2e-3);
+}
+
+TEST(Warp, DensitiesIntegrateToOne) {
+    for (float cos_max : {0.999f, 0.5f, -0.9f})
+        EXPECT_NEAR(uniform_cone_pdf(cos_max) * 2 * kPi * (1 - cos_max), 1.0f, 1e-5f);
+    EXPECT_NEAR(uniform_sphere_pdf() * 4 * kPi, 1.0f, 1e-6f);
+    // The polygon area against the shoelace formula over its vertices.
+    for (int blades : {3, 5, 6, 9}) {
+        double area = 0;
+        for (int k = 0; k < blades; ++k) {
+            const double a0 = 2 * M_PI * k / blades, a1 = 2 * M_PI * (k + 1) / blades;
+            area += 0.5 * (std::cos(a0) * std::sin(a1) - std::cos(a1) * std::sin(a0));
+        }
+        EXPECT_NEAR(polygon_area(blades), area, 1e-6) << blades;
+    }
+}
+
+TEST(Warp, DensitiesVanishOutsideTheirDomain) {
+    for (Vec3 w : {Vec3(0, 0, -1), normalize(Vec3(1, 2, -0.01f)), normalize(Vec3(-1, 0, -3))}) {
+        EXPECT_EQ(uniform_hemisphere_pdf(w), 0.0f);
+        EXPECT_EQ(cosine_hemisphere_pdf(w), 0.0f);
+    }
+    EXPECT_EQ(cosine_hemisphere_pdf(Vec3(1, 0, 0)), 0.0f);
+    EXPECT_GT(uniform_hemisphere_pdf(normalize(Vec3(1, 2, 0.01f))), 0.0f);
+    EXPECT_GT(cosine_hemisphere_pdf(normalize(Vec3(1, 2, 0.01f))), 0.0f);
+}
+
+TEST(Warp, ImagesStayInTheirDomains) {
+    // The corners and edges of the unit square, where rounding is most likely to escape.
+    const float one = 0x1.fffffep-1f;
+    for (float x : {0.0f, 0.5f, one})
+        for (float y : {0.0f, 1e-7f, 0.5f, one}) {
+            const Vec2 u(x, y);
+            const Vec2 d = square_to_concentric_disk(u);
+            EXPECT_LE(d.x * d.x + d.y * d.y, 1.0f + 1e-6f);
+            const Vec2 b = square_to_triangle(u);
+            EXPECT_GE(b.x, 0.0f);
+            EXPECT_GE(b.y, 0.0f);
+            EXPECT_LE(b.x + b.y, 1.0f + 1e-6f);
+            EXPECT_GE(square_to_cosine_hemisphere(u).z, 0.0f);
+            EXPECT_GE(square_to_uniform_hemisphere(u).z, 0.0f);
+            EXPECT_NEAR(length(square_to_uniform_sphere(u)), 1.0f, 1e-6f);
+            EXPECT_GE(square_to_uniform_cone(u, 0.8f).z, 0.8f - 1e-6f);
+            for (int blades : {5, 6})
+                EXPECT_TRUE(Polygon(blades, 0).contains(square_to_polygon(u, blades) * 0.9999f))
+                    << x << " " << y;
+        }
+}
+
+}  // namespace
+}  // namespace penumbra

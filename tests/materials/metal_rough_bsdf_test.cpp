@@ -1,0 +1,238 @@
+#include "materials/metal_rough_bsdf.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "materials/fresnel.h"
+#include "support/bsdf_checks.h"
+
+namespace penumbra {
+namespace {
+
+using test::spherical_direction;
+
+const float kRoughness[] = {0.05f, 0.3f, 0.7f, 1.0f};
+const float kMetallic[] = {0.0f, 0.5f, 1.0f};
+const float kCosOs[] = {1.0f, 0.7f, 0.3f, 0.05f};
+
+// Base colours and KHR_materials_specular / _ior variants.
+MetalRoughParams params(int variant, float roughness, float metallic) {
+    MetalRoughParams p;
+    p.alpha = roughness * roughness;
+    p.metallic = metallic;
+    switch (variant % 4) {
+        case 0:  // glTF defaults: ior 1.5, specular 1
+            p.base_color = {0.8f, 0.6f, 0.3f};
+            break;
+        case 1:  // ior 1.8 with a coloured specularColor
+            p.base_color = {0.9f, 0.9f, 0.9f};
+            p.dielectric_f0 = Spectrum(1.0f, 0.6f, 0.3f) * f0_from_ior(1.8f);
+            break;
+        case 2:  // specular 0.5
+            p.base_color = {0.2f, 0.5f, 0.9f};
+            p.dielectric_f0 = Spectrum(0.5f * 0.04f);
+            p.dielectric_f90 = 0.5f;
+            break;
+        default:  // specular 0: the dielectric is purely diffuse
+            p.base_color = {0.7f, 0.3f, 0.5f};
+            p.dielectric_f0 = Spectrum(0);
+            p.dielectric_f90 = 0;
+            break;
+    }
+    return p;
+}
+
+std::string describe(const MetalRoughParams& p, Vec3 wo) {
+    std::ostringstream s;
+    s << "alpha " << p.alpha << ", metallic " << p.metallic << ", f0 " << p.dielectric_f0.x << " "
+      << p.dielectric_f0.y << " " << p.dielectric_f0.z << ", f90 " << p.dielectric_f90 << ", base "
+      << p.base_color.x << " " << p.base_color.y << " " << p.base_color.z << ", wo.z " << wo.z;
+    return s.str();
+}
+
+// The Fresnel mix of the specular lobe, written out from the glTF spec.
+Spectrum expected_fresnel(const MetalRoughParams& p, float c) {
+    return fresnel_schlick(p.dielectric_f0, p.dielectric_f90, c) * (1 - p.metallic) +
+           fresnel_schlick(p.base_color, 1, c) * p.metallic;
+}
+
+void expect_relative(Spectrum a, Spectrum b, float tol, const std::string& what) {
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(a[c], b[c], tol * std::max(std::abs(b[c]), 1e-6f)) << what;
+}
+
+TEST(MetalRoughBsdf, SamplesFollowThePdf) {
+    const int tests = std::size(kRoughness) * std::size(kMetallic) * std::size(kCosOs);
+    test::BsdfChi2Options o;
+    o.samples = 100000;
+    o.significance = test::sidak_significance(0.01, tests);
+    int variant = 0;
+    for (float roughness : kRoughness)
+        for (float metallic : kMetallic)
+            for (float cos_o : kCosOs) {
+                const MetalRoughParams p = params(variant++, roughness, metallic);
+                const MetalRoughBsdf bsdf(p);
+                const Vec3 wo = spherical_direction(cos_o, 2.5f);
+                o.seed = 41 + variant;
+                const test::Chi2Result r = test::bsdf_chi2(bsdf, wo, o);
+                EXPECT_TRUE(r.passed) << describe(p, wo) << "\n" << r.report;
+                EXPECT_LE(r.pdf_integral, 1 + 1e-4) << describe(p, wo);
+            }
+}
+
+TEST(MetalRoughBsdf, MirrorSamplesCarryFresnelOverLobeProbability) {
+    // Roughness 0: the specular lobe is a delta; what remains must still match pdf(),
+    // which then integrates to 1 - P(specular).
+    test::BsdfChi2Options o;
+    o.samples = 100000;
+    o.significance = test::sidak_significance(0.01, 2 * std::size(kCosOs));
+    int variant = 0;
+    for (float metallic : kMetallic)
+        for (float cos_o : kCosOs) {
+            const MetalRoughParams p = params(variant++, 0.0f, metallic);
+            const MetalRoughBsdf bsdf(p);
+            ASSERT_TRUE(bsdf.has_specular());
+            const Vec3 wo = spherical_direction(cos_o, -0.8f);
+            const std::string what = describe(p, wo);
+            Rng rng(50 + variant);
+            float p_specular = -1;
+            int specular = 0;
+            const int n = 20000;
+            for (int i = 0; i < n; ++i) {
+                const auto s =
+                    bsdf.sample(wo, rng.next_float(), {rng.next_float(), rng.next_float()},
+                                Transport::Radiance);
+                ASSERT_TRUE(s) << what;
+                if (!s->is_specular()) {
+                    // The diffuse base: value and density as eval() and pdf() give them.
+                    expect_relative(s->f, bsdf.eval(wo, s->wi, Transport::Radiance), 1e-6f, what);
+                    EXPECT_NEAR(s->pdf, bsdf.pdf(wo, s->wi, Transport::Radiance), 1e-6f * s->pdf);
+                    continue;
+                }
+                ++specular;
+                EXPECT_EQ(s->wi, Vec3(-wo.x, -wo.y, wo.z)) << what;
+                ASSERT_GT(s->pdf, 0.0f) << what;
+                ASSERT_LE(s->pdf, 1.0f) << what;
+                if (p_specular < 0) p_specular = s->pdf;
+                EXPECT_EQ(s->pdf, p_specular) << what;
+                expect_relative(s->weight(), expected_fresnel(p, wo.z) / s->pdf, 1e-5f, what);
+            }
+            if (specular == 0) {
+                // Only a layer without Fresnel reflection (specular 0) has no mirror lobe.
+                EXPECT_TRUE(is_black(expected_fresnel(p, wo.z))) << what;
+                p_specular = 0;
+            }
+            // The lobe is chosen with the probability it reports.
+            const double sigma = std::sqrt(p_specular * (1 - p_specular) / n);
+            EXPECT_NEAR(double(specular) / n, p_specular, 5 * sigma + 1e-9) << what;
+            if (metallic == 1.0f) {
+                EXPECT_EQ(specular, n) << what;  // no diffuse base left to sample
+                continue;
+            }
+            o.seed = 60 + variant;
+            const test::Chi2Result r = test::bsdf_chi2(bsdf, wo, o);
+            EXPECT_TRUE(r.passed) << what << "\n" << r.report;
+            EXPECT_NEAR(r.pdf_integral, 1 - p_specular, 1e-4) << what;
+        }
+}
+
+TEST(MetalRoughBsdf, SampleAgreesWithEvalAndPdf) {
+    Rng rng(7);
+    for (int i = 0; i < 4000; ++i) {
+        const MetalRoughParams p = params(i, 0.02f + 0.98f * rng.next_float(), rng.next_float());
+        const MetalRoughBsdf bsdf(p);
+        const Vec3 wo = spherical_direction(0.02f + 0.98f * rng.next_float(), 6 * rng.next_float());
+        const auto s = bsdf.sample(wo, rng.next_float(), {rng.next_float(), rng.next_float()},
+                                   Transport::Radiance);
+        if (!s) continue;  // a microfacet reflection below the horizon
+        ASSERT_FALSE(s->is_specular());
+        ASSERT_GT(s->wi.z, 0.0f);
+        const std::string what = describe(p, wo);
+        expect_relative(s->f, bsdf.eval(wo, s->wi, Transport::Radiance), 1e-6f, what);
+        EXPECT_NEAR(s->pdf, bsdf.pdf(wo, s->wi, Transport::Radiance), 1e-6f * s->pdf) << what;
+    }
+}
+
+TEST(MetalRoughBsdf, Reciprocity) {
+    Rng rng(8);
+    for (int i = 0; i < 4000; ++i) {
+        // Roughness 0 too: the diffuse base of a mirror must be reciprocal as well.
+        const float roughness = i % 5 == 0 ? 0.0f : rng.next_float();
+        const MetalRoughParams p = params(i, roughness, rng.next_float());
+        const MetalRoughBsdf bsdf(p);
+        const Vec3 wo = spherical_direction(0.02f + 0.98f * rng.next_float(), 6 * rng.next_float());
+        const Vec3 wi = spherical_direction(0.02f + 0.98f * rng.next_float(), 6 * rng.next_float());
+        expect_relative(bsdf.eval(wo, wi, Transport::Radiance),
+                        bsdf.eval(wi, wo, Transport::Radiance), 1e-4f, describe(p, wo));
+    }
+}
+
+// Directional albedo of a white material: at most 1 (3 sigma of the estimate, plus float
+// rounding), for every roughness and view angle.
+void expect_white_furnace(float metallic) {
+    for (float roughness : {0.0f, 0.05f, 0.3f, 0.7f, 1.0f})
+        for (float cos_o : kCosOs) {
+            MetalRoughParams p;
+            p.base_color = Spectrum(1);
+            p.alpha = roughness * roughness;
+            p.metallic = metallic;
+            const Vec3 wo = spherical_direction(cos_o, 1.3f);
+            const test::AlbedoEstimate a =
+                test::directional_albedo(MetalRoughBsdf(p), wo, 20000, 9);
+            EXPECT_LE(a.mean.x, 1 + 3 * a.std_error.x + 1e-5f)
+                << describe(p, wo) << ": albedo " << a.mean.x << " +- " << a.std_error.x;
+        }
+}
+
+TEST(MetalRoughBsdf, WhiteFurnaceMetal) { expect_white_furnace(1.0f); }
+
+// Disabled: the glTF 2.0 dielectric BRDF (spec Appendix B, fresnel_mix) gains energy
+// away from normal incidence. The diffuse base is weighted by 1 - F(v.h), and for
+// light arriving near the normal v.h stays large while the specular lobe reflects
+// F(n.v): at wo.z = 0.05 a white dielectric reflects about 1.7 (1.35 at metallic 0.5),
+// at wo.z = 0.7 about 1.0006. This follows the spec, so it is not fixed here; enable this
+// once the model conserves energy (e.g. albedo scaling of the base).
+TEST(MetalRoughBsdf, DISABLED_WhiteFurnaceDielectric) {
+    expect_white_furnace(0.0f);
+    expect_white_furnace(0.5f);
+}
+
+TEST(MetalRoughBsdf, WhiteMirrorReflectsEverything) {
+    MetalRoughParams p;
+    p.base_color = Spectrum(1);
+    p.metallic = 1;
+    p.alpha = 0;
+    const MetalRoughBsdf bsdf(p);
+    Rng rng(10);
+    for (float cos_o : kCosOs) {
+        const Vec3 wo = spherical_direction(cos_o, 0.5f);
+        for (int i = 0; i < 100; ++i) {
+            const auto s = bsdf.sample(wo, rng.next_float(), {rng.next_float(), rng.next_float()},
+                                       Transport::Radiance);
+            ASSERT_TRUE(s);
+            ASSERT_TRUE(s->is_specular());
+            EXPECT_EQ(s->pdf, 1.0f);
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(s->weight()[c], 1.0f, 1e-6f);
+        }
+        EXPECT_TRUE(is_black(bsdf.eval(wo, Vec3(-wo.x, -wo.y, wo.z), Transport::Radiance)));
+    }
+}
+
+TEST(MetalRoughBsdf, NothingBelowTheHorizon) {
+    for (float roughness : {0.0f, 0.5f}) {
+        const MetalRoughBsdf bsdf(params(0, roughness, 0.5f));
+        const Vec3 up = spherical_direction(0.5f, 1), down = spherical_direction(-0.5f, 2);
+        EXPECT_TRUE(is_black(bsdf.eval(up, down, Transport::Radiance)));
+        EXPECT_TRUE(is_black(bsdf.eval(down, up, Transport::Radiance)));
+        EXPECT_EQ(bsdf.pdf(up, down, Transport::Radiance), 0.0f);
+        EXPECT_EQ(bsdf.pdf(down, up, Transport::Radiance), 0.0f);
+        EXPECT_FALSE(bsdf.sample(down, 0.5f, {0.3f, 0.6f}, Transport::Radiance));
+        EXPECT_FALSE(bsdf.sample(down, 0.01f, {0.3f, 0.6f}, Transport::Radiance));
+    }
+}
+
+}  // namespace
+}  // namespace penumbra
