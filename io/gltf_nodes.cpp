@@ -2,11 +2,13 @@
 // lights, each with its flattened world transform (parent * local).
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "core/lights/directional_light.h"
 #include "core/lights/point_light.h"
 #include "core/lights/spot_light.h"
+#include "core/camera/thin_lens_camera.h"
 #include "io/gltf_context.h"
 
 namespace penumbra {
@@ -73,6 +75,40 @@ Transform rigid(const Transform& t) {
     return Transform(r);
 }
 
+// A number in a JSON object, if present; anything but a finite number is an error.
+std::optional<float> lens_number(const GltfContext& ctx, const std::string& el,
+                                 const tinygltf::Value& obj, const char* key) {
+    if (!obj.IsObject() || !obj.Has(key)) return std::nullopt;
+    const tinygltf::Value& v = obj.Get(key);
+    if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble()) || v.GetNumberAsDouble() < 0)
+        ctx.fail(el, std::string(key) + " must be a non-negative number");
+    return float(v.GetNumberAsDouble());
+}
+
+// Depth of field. glTF core has no lens; we read, in order of precedence, the
+// EXT_cameras_sensor extension (sensorHeight in mm, fStop, focusDistance in metres) and
+// the camera's extras (aperture_radius in metres, or fstop; focus_distance; blades;
+// sensor_height_mm). See docs/conventions.md.
+void read_lens(const GltfContext& ctx, const std::string& el, const tinygltf::Camera& gc,
+               CameraDesc& c) {
+    float fstop = 0;
+    const tinygltf::Value& x = gc.extras;
+    if (auto v = lens_number(ctx, el + ".extras", x, "sensor_height_mm")) c.sensor_height_mm = *v;
+    if (auto v = lens_number(ctx, el + ".extras", x, "fstop")) fstop = *v;
+    if (auto v = lens_number(ctx, el + ".extras", x, "aperture_radius")) c.aperture_radius = *v;
+    if (auto v = lens_number(ctx, el + ".extras", x, "focus_distance")) c.focus_distance = *v;
+    if (auto v = lens_number(ctx, el + ".extras", x, "blades")) c.aperture_blades = int(*v);
+    const auto it = gc.extensions.find("EXT_cameras_sensor");
+    if (it != gc.extensions.end()) {
+        const std::string ext = el + ".extensions.EXT_cameras_sensor";
+        if (auto v = lens_number(ctx, ext, it->second, "sensorHeight")) c.sensor_height_mm = *v;
+        if (auto v = lens_number(ctx, ext, it->second, "fStop")) fstop = *v;
+        if (auto v = lens_number(ctx, ext, it->second, "focusDistance")) c.focus_distance = *v;
+    }
+    if (fstop > 0 && c.aperture_radius == 0 && c.type == ProjectionType::Perspective)
+        c.aperture_radius = aperture_radius_from_fstop(fstop, c.yfov, c.sensor_height_mm);
+}
+
 CameraDesc make_camera(const GltfContext& ctx, int index, const tinygltf::Node& node,
                        const Transform& world) {
     const tinygltf::Camera& gc = ctx.model.cameras[size_t(index)];
@@ -103,6 +139,7 @@ CameraDesc make_camera(const GltfContext& ctx, int index, const tinygltf::Node& 
         ctx.fail(el, "type '" + gc.type + "' is not perspective or orthographic");
     }
     c.to_world = rigid(world);
+    read_lens(ctx, el, gc, c);
     return c;
 }
 
@@ -130,7 +167,7 @@ std::unique_ptr<Light> make_light(const GltfContext& ctx, const LightNode& ln, f
     }
     if (!(gl.intensity >= 0) || !std::isfinite(gl.intensity))
         ctx.fail(el, "intensity must be a finite number >= 0");
-    const Spectrum I = color * float(gl.intensity);
+    const Spectrum I = ctx.rec709_to_working * color * float(gl.intensity);
     const Vec3 position = ln.to_world.point(Vec3(0, 0, 0));
     const Vec3 axis = ln.to_world.vector(Vec3(0, 0, -1));
     if (gl.type == "point") return std::make_unique<PointLight>(position, I);

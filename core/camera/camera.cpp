@@ -2,6 +2,7 @@
 
 #include "core/camera/orthographic_camera.h"
 #include "core/camera/perspective_camera.h"
+#include "core/camera/thin_lens_camera.h"
 
 namespace penumbra {
 
@@ -13,6 +14,10 @@ std::unique_ptr<Camera> make_camera(const CameraDesc& desc, int width, int heigh
         return std::make_unique<OrthographicCamera>(desc.to_world, xmag, desc.ymag, width,
                                                     height);
     }
+    if (desc.aperture_radius > 0 && desc.focus_distance > 0)
+        return std::make_unique<ThinLensCamera>(desc.to_world, desc.yfov, width, height,
+                                                desc.aperture_radius, desc.focus_distance,
+                                                desc.aperture_blades, desc.blade_rotation);
     return std::make_unique<PerspectiveCamera>(desc.to_world, desc.yfov, width, height);
 }
 

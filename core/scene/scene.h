@@ -60,6 +60,13 @@ struct CameraDesc {
     float zfar = 0;           // 0: infinite
     Transform to_world;       // camera looks down its local -Z, +Y up (glTF)
     int node = -1;
+    // Thin lens (perspective only). aperture_radius 0 is a pinhole. From the file's
+    // EXT_cameras_sensor / camera extras when present, else overridden on the command line.
+    float aperture_radius = 0;     // world units
+    float focus_distance = 0;      // along the view axis, world units; 0: unset
+    int aperture_blades = 0;       // 0: circular aperture; >= 3: regular polygon
+    float blade_rotation = 0;      // radians
+    float sensor_height_mm = 24;   // for f-stop to aperture conversion (full frame)
 };
 
 struct Scene {
