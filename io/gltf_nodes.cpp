@@ -10,6 +10,7 @@
 #include "core/lights/spot_light.h"
 #include "core/camera/thin_lens_camera.h"
 #include "io/gltf_context.h"
+#include "io/gltf_instancing.h"
 
 namespace penumbra {
 
@@ -222,7 +223,8 @@ void load_nodes(const GltfContext& ctx, int scene_index, Scene& scene) {
             ctx.check_index(el, "mesh", node.mesh, m.meshes.size(), "meshes");
             if (node.skin != -1)
                 ctx.warn_once("nodes", "skins are ignored (meshes keep their bind pose)");
-            if (!scene.objects[size_t(node.mesh)].meshes.empty())
+            if (!scene.objects[size_t(node.mesh)].meshes.empty() &&
+                !add_gpu_instances(ctx, el, node, index, world, scene))
                 scene.instances.push_back(Instance{uint32_t(node.mesh), world, index,
                                                    node.name.empty() ? el : node.name});
         }

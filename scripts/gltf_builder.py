@@ -15,8 +15,10 @@ class Builder:
     def _view(self, data, target):
         while len(self.blob) % 4:
             self.blob.append(0)
-        self.views.append({"buffer": 0, "byteOffset": len(self.blob),
-                           "byteLength": len(data), "target": target})
+        view = {"buffer": 0, "byteOffset": len(self.blob), "byteLength": len(data)}
+        if target is not None:
+            view["target"] = target
+        self.views.append(view)
         self.blob += data
         return len(self.views) - 1
 
@@ -26,6 +28,18 @@ class Builder:
         hi = [max(v[i] for v in values) for i in range(3)]
         self.accessors.append({"bufferView": self._view(data, 34962), "componentType": 5126,
                                "count": len(values), "type": "VEC3", "min": lo, "max": hi})
+        return len(self.accessors) - 1
+
+    def vec4(self, values):
+        data = b"".join(struct.pack("<4f", *v) for v in values)
+        self.accessors.append({"bufferView": self._view(data, None), "componentType": 5126,
+                               "count": len(values), "type": "VEC4"})
+        return len(self.accessors) - 1
+
+    def indices32(self, values):
+        data = struct.pack("<%dI" % len(values), *values)
+        self.accessors.append({"bufferView": self._view(data, 34963), "componentType": 5125,
+                               "count": len(values), "type": "SCALAR"})
         return len(self.accessors) - 1
 
     def indices(self, values):

@@ -1,0 +1,18 @@
+// EXT_mesh_gpu_instancing: a node whose mesh is drawn many times, each with its own
+// translation, rotation and scale from accessors, becomes that many Instances of the one
+// shared Object (nothing about the mesh is duplicated).
+#pragma once
+
+#include <string>
+
+#include "core/scene/scene.h"
+#include "io/gltf_context.h"
+
+namespace penumbra {
+
+// True when the node carries the extension: its instances were appended to
+// scene.instances (parent world transform times each instance's TRS).
+bool add_gpu_instances(const GltfContext& ctx, const std::string& el, const tinygltf::Node& node,
+                       int node_index, const Transform& world, Scene& scene);
+
+}  // namespace penumbra
