@@ -20,7 +20,7 @@ Spectrum BasicIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         }
         const SurfacePoint sp = make_surface_point(scene, ray, *hit);
         const Vec3 wo_world = normalize(-ray.d);
-        const ShadingData sd = shade(scene, sp, wo_world);
+        const ShadingData sd = shade(scene, sp, wo_world, ctx.materials);
         const Bsdf* bsdf = sd.bsdf.get();
         const Vec3 wo = sd.frame.to_local(wo_world);
         L += throughput * sd.emission;

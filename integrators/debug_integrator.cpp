@@ -23,7 +23,7 @@ Spectrum DebugIntegrator::Li(const Ray& ray, const RenderContext& ctx, Sampler&)
         case DebugView::GeometricNormal:
             return sp.ng * 0.5f + Spectrum(0.5f);
         case DebugView::Albedo:
-            return shade(scene, sp, normalize(-ray.d)).base_color;
+            return shade(scene, sp, normalize(-ray.d), ctx.materials).base_color;
         case DebugView::Depth:
             return Spectrum(hit->t * length(ray.d));
         case DebugView::Uv:

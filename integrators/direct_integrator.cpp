@@ -24,7 +24,7 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         }
         const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
         const Vec3 wo_world = normalize(-ray.d);
-        const ShadingData sd = shade(ctx.scene, sp, wo_world);
+        const ShadingData sd = shade(ctx.scene, sp, wo_world, ctx.materials);
         if (sd.opacity < 1 && (sd.opacity <= 0 || sampler.get_1d() >= sd.opacity)) {
             if (++passes > 256) break;
             ray.o = offset_ray_origin(sp.p, sd.ng, ray.d);

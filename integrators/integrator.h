@@ -10,6 +10,7 @@
 #include "core/lights/light_set.h"
 #include "core/sampling/sampler.h"
 #include "core/scene/scene.h"
+#include "materials/material.h"
 
 namespace penumbra {
 
@@ -19,6 +20,7 @@ struct RenderContext {
     const Accel& accel;
     const LightSet& lights;
     bool has_alpha = false;  // some material is MASK or BLEND: rays test coverage
+    MaterialOptions materials{};  // how glTF materials become BSDFs (--microfacet)
 };
 
 // Which strategies estimate light from non-delta emitters in "path": both with MIS, or

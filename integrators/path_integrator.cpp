@@ -8,6 +8,9 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
                             Sampler& sampler) const {
     const LightStrategy strategy = m_options.strategy;
     Spectrum L(0), beta(1);
+    // Product of (eta_i / eta_o)^2 over refractions: radiance scaling that Russian
+    // roulette should not mistake for absorption (pbrt-v4's etaScale).
+    float eta_scale = 1;
     Ray ray = camera_ray;
     // State of the previous vertex, for MIS on emitters that BSDF sampling finds.
     bool specular_bounce = false;
@@ -32,7 +35,7 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         }
         const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
         const Vec3 wo_world = normalize(-ray.d);
-        const ShadingData sd = shade(ctx.scene, sp, wo_world);
+        const ShadingData sd = shade(ctx.scene, sp, wo_world, ctx.materials);
 
         // Stochastic transparency: pass through with probability 1 - opacity.
         if (sd.opacity < 1 && (sd.opacity <= 0 || sampler.get_1d() >= sd.opacity)) {
@@ -65,6 +68,7 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         // cross the surface (or leak): end the path there.
         if ((bs->wi.z > 0) != (dot(wi_world, sd.ng) > 0)) break;
         beta *= bs->weight();
+        eta_scale *= bs->eta * bs->eta;
         specular_bounce = bs->is_specular();
         bsdf_pdf = bs->pdf;
         prev_p = sp.p;
@@ -74,7 +78,7 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
 
         if (depth >= m_options.rr_depth) {
             // Continue with probability proportional to the throughput (capped at 1).
-            const float q = std::max(0.05f, 1 - max_component(beta));
+            const float q = std::max(0.05f, 1 - max_component(beta) * eta_scale);
             if (sampler.get_1d() < q) break;
             beta /= 1 - q;
         }

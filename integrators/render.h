@@ -1,20 +1,24 @@
 // The render loop, in one place: the image is cut into tiles that TBB renders in
 // parallel; every pixel sample seeds its sampler from (seed, pixel, sample index), so
-// the image is bitwise identical for any thread count.
+// the image is bitwise identical for any thread count and any split into passes.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <string>
 
 #include "core/camera/camera.h"
 #include "core/film/film.h"
 #include "core/film/filter.h"
+#include "core/progress.h"
 #include "core/sampling/sampler.h"
 #include "integrators/integrator.h"
 
 namespace penumbra {
 
 struct RenderOptions {
+    // The sample budget per pixel. Stratified and Sobol samplers lay their strata out
+    // for this count, so a render stopped early has an unbiased, less even subset.
     uint32_t spp = 16;
     uint64_t seed = 0;
     int threads = 0;  // 0: all hardware threads
@@ -23,6 +27,19 @@ struct RenderOptions {
     std::string filter = "gaussian";
     bool progress = true;
     std::string label = "render";
+    // Scene time in seconds (frame / fps) for animated scenes. Nothing evaluates
+    // animation yet: the loader will read it; for now every frame shows the same scene.
+    double time = 0;
+    // Seconds for the whole image, 0: none. No pass starts that is predicted to end
+    // after it; the first pass (1 spp) always runs.
+    double time_limit = 0;
+    // User interrupts so far (Ctrl-C): 1 stops after the current pass, 2 abandons the
+    // pass at once. Written by a signal handler; polled here. nullptr: none.
+    const std::atomic<int>* interrupts = nullptr;
+    BatchProgress* batch = nullptr;  // the overall bar of a batch, or nullptr
+    // AOVs to accumulate besides the beauty (the film render() returns has them). The
+    // first-hit ones cost one more camera ray per sample; rays traced include it.
+    AovSet aovs;
 };
 
 struct RenderStats {
@@ -30,8 +47,29 @@ struct RenderStats {
     uint64_t rays = 0;
     uint64_t camera_samples = 0;
     uint64_t nonfinite_samples = 0;
+    uint32_t spp = 0;          // samples per pixel actually rendered
+    int passes = 0;
+    bool interrupted = false;  // stopped by a user interrupt before options.spp
+    bool aborted = false;      // second interrupt: the last pass is incomplete
 };
 
+// Adds sample indices [first, last) of every pixel to film (the camera's size), in
+// index order per pixel: rendering [0,k) then [k,n) equals [0,n) bit for bit. Returns
+// false when a second interrupt abandoned the pass; the film is then inconsistent.
+bool render_samples(const RenderContext& ctx, const Camera& camera,
+                    const Integrator& integrator, const RenderOptions& options, Film& film,
+                    uint32_t first, uint32_t last, ProgressReporter* progress = nullptr);
+
+// How many samples per pixel the next pass should render when `done` took `elapsed`
+// seconds: as many again as are done (so passes cost little), but no pass predicted to
+// last over max_pass_seconds (an interrupt is then honoured soon) or to end after
+// time_limit (when > 0). 0: stop.
+uint32_t next_pass_samples(uint32_t done, uint32_t budget, double elapsed, double time_limit,
+                           double max_pass_seconds = 2.0);
+
+// Renders options.spp samples per pixel in passes (1, 1, 2, 4, ... samples, shortened
+// to keep each pass to a few seconds and within the time limit) so that an interrupt
+// or the time limit stops between passes. stats->spp says how many were rendered.
 Film render(const RenderContext& ctx, const Camera& camera, const Integrator& integrator,
             const RenderOptions& options, RenderStats* stats = nullptr);
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/math/mat3.h"
 #include "core/scene/scene.h"
 
 namespace penumbra {
@@ -16,6 +17,7 @@ namespace penumbra {
 struct GltfContext {
     const tinygltf::Model& model;
     std::string file;  // as the caller named it; prefixes every message
+    Mat3 rec709_to_working = Mat3::identity();  // for light colours (scene_color.h)
 
     // Throws SceneError "<file>: <element>: <problem>".
     [[noreturn]] void fail(const std::string& element, const std::string& problem) const {

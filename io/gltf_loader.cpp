@@ -11,17 +11,17 @@
 
 #include "core/log.h"
 #include "io/gltf_context.h"
+#include "io/scene_color.h"
 
 namespace penumbra {
 
 namespace {
 
-// Extensions whose meaning we implement. KHR_texture_transform is not among them:
-// TextureRef carries no UV transform, so a file that requires it is refused and one that
-// merely uses it renders with untransformed UVs (after a warning).
-const char* const kSupportedExtensions[] = {"KHR_lights_punctual",
-                                            "KHR_materials_emissive_strength", "KHR_materials_ior",
-                                            "KHR_materials_specular", "KHR_mesh_quantization"};
+// Extensions whose meaning we implement.
+const char* const kSupportedExtensions[] = {
+    "KHR_lights_punctual",    "KHR_materials_emissive_strength", "KHR_materials_ior",
+    "KHR_materials_specular", "KHR_materials_transmission",      "KHR_mesh_quantization",
+    "KHR_texture_transform",  "EXT_cameras_sensor",              "EXT_mesh_gpu_instancing"};
 
 bool is_supported(const std::string& name) {
     for (const char* s : kSupportedExtensions)
@@ -149,13 +149,14 @@ void GltfContext::warn_once(const std::string& element, const std::string& probl
 
 Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
     const tinygltf::Model model = parse(path);
-    const GltfContext ctx{model, path};
+    const GltfContext ctx{model, path, options.rec709_to_working};
     check_asset_and_extensions(ctx);
 
     Scene scene;
     scene.source = path;
     load_meshes(ctx, scene);
     load_materials(ctx, scene);
+    convert_scene_colors(scene, options.rec709_to_working);
     const int scene_index = choose_scene(ctx, options.scene);
     if (scene_index >= 0)
         load_nodes(ctx, scene_index, scene);

@@ -5,12 +5,16 @@
 
 #include <string>
 
+#include "core/math/mat3.h"
 #include "core/scene/scene.h"
 
 namespace penumbra {
 
 struct GltfLoadOptions {
     int scene = -1;  // glTF scene index; -1: the file's default scene (or scene 0)
+    // glTF's linear Rec.709 colours (factors, colour textures, vertex and light colours)
+    // into the working space (io/scene_color.h); identity: left as they are.
+    Mat3 rec709_to_working = Mat3::identity();
 };
 
 // Loads the file at path. Cameras and lights are only those the file defines; the

@@ -1,7 +1,8 @@
 // glTF materials to MaterialDesc, and the textures and images they reference. Colour
 // textures (base colour, emissive) are sRGB-encoded and decoded to linear; data textures
-// (metallic-roughness, normal, occlusion) are linear. An image used both ways is decoded
-// twice, so each Scene image has one encoding.
+// (metallic-roughness, normal, occlusion, transmission) are linear. An image used both
+// ways is decoded twice, so each Scene image has one encoding. Every texture reference
+// may carry KHR_texture_transform.
 #include <map>
 #include <utility>
 
@@ -13,17 +14,56 @@ namespace penumbra {
 
 namespace {
 
+// Reads an optional number from an extension object; throws when it is not a number.
+float number(const GltfContext& ctx, const std::string& el, const tinygltf::Value& obj,
+             const char* key, float fallback) {
+    if (!obj.Has(key)) return fallback;
+    const tinygltf::Value& v = obj.Get(key);
+    if (!v.IsNumber()) ctx.fail(el, std::string(key) + " is not a number");
+    return float(v.GetNumberAsDouble());
+}
+
+// An optional array of two numbers.
+Vec2 vec2(const GltfContext& ctx, const std::string& el, const tinygltf::Value& obj,
+          const char* key, Vec2 fallback) {
+    if (!obj.Has(key)) return fallback;
+    const tinygltf::Value& v = obj.Get(key);
+    if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
+        ctx.fail(el, std::string(key) + " must have 2 numbers");
+    return {float(v.Get(0).GetNumberAsDouble()), float(v.Get(1).GetNumberAsDouble())};
+}
+
+// The KHR_texture_transform object of a textureInfo's extensions, or a null Value.
+const tinygltf::Value& texture_transform(const tinygltf::ExtensionMap& extensions) {
+    static const tinygltf::Value none;
+    const auto it = extensions.find("KHR_texture_transform");
+    return it == extensions.end() ? none : it->second;
+}
+
 // Scene textures and images, created on first use by a material, keyed by the glTF
 // index and the encoding the use implies.
 class TextureTable {
 public:
     TextureTable(const GltfContext& ctx, Scene& scene) : m_ctx(ctx), m_scene(scene) {}
 
-    // The reference for a glTF textureInfo at element path `el`.
-    TextureRef ref(const std::string& el, int texture, int texcoord, ImageEncoding encoding) {
+    // The reference for a glTF textureInfo at element path `el`, with the extensions of
+    // that textureInfo (for KHR_texture_transform).
+    TextureRef ref(const std::string& el, int texture, int texcoord, ImageEncoding encoding,
+                   const tinygltf::ExtensionMap& extensions) {
         TextureRef r;
         if (texture == -1) return r;  // tinygltf's "absent"
         m_ctx.check_index(el, "texture", texture, m_ctx.model.textures.size(), "textures");
+        const tinygltf::Value& xf = texture_transform(extensions);
+        if (xf.IsObject()) {
+            const std::string xel = el + ".extensions.KHR_texture_transform";
+            r.offset = vec2(m_ctx, xel, xf, "offset", r.offset);
+            r.rotation = number(m_ctx, xel, xf, "rotation", r.rotation);
+            r.scale = vec2(m_ctx, xel, xf, "scale", r.scale);
+            if (xf.Has("texCoord")) {
+                if (!xf.Get("texCoord").IsInt()) m_ctx.fail(xel, "texCoord is not an integer");
+                texcoord = xf.Get("texCoord").GetNumberAsInt();
+            }
+        }
         if (texcoord < 0) m_ctx.fail(el, "texCoord " + std::to_string(texcoord) + " is negative");
         // TriangleMesh keeps TEXCOORD_0 and _1 only.
         if (texcoord > 1) {
@@ -102,15 +142,6 @@ private:
     std::map<std::pair<int, int>, int> m_textures, m_images;
 };
 
-// Reads an optional number from an extension object; throws when it is not a number.
-float number(const GltfContext& ctx, const std::string& el, const tinygltf::Value& obj,
-             const char* key, float fallback) {
-    if (!obj.Has(key)) return fallback;
-    const tinygltf::Value& v = obj.Get(key);
-    if (!v.IsNumber()) ctx.fail(el, std::string(key) + " is not a number");
-    return float(v.GetNumberAsDouble());
-}
-
 Vec3 vec3(const GltfContext& ctx, const std::string& el, const char* key,
           const std::vector<double>& v) {
     if (v.size() != 3) ctx.fail(el, std::string(key) + " must have 3 numbers");
@@ -124,6 +155,26 @@ const tinygltf::Value& extension(const tinygltf::Material& gm, const char* name)
     return it == gm.extensions.end() ? none : it->second;
 }
 
+// A textureInfo inside an extension object (tinygltf leaves those as JSON values).
+TextureRef extension_texture(const GltfContext& ctx, const std::string& el,
+                             const tinygltf::Value& obj, const char* key, TextureTable& textures) {
+    if (!obj.Has(key)) return {};
+    const tinygltf::Value& info = obj.Get(key);
+    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt())
+        ctx.fail(el, "must be a textureInfo with an integer index");
+    int texcoord = 0;
+    if (info.Has("texCoord")) {
+        if (!info.Get("texCoord").IsInt()) ctx.fail(el, "texCoord is not an integer");
+        texcoord = info.Get("texCoord").GetNumberAsInt();
+    }
+    tinygltf::ExtensionMap extensions;
+    if (info.Has("extensions") && info.Get("extensions").Has("KHR_texture_transform"))
+        extensions["KHR_texture_transform"] =
+            info.Get("extensions").Get("KHR_texture_transform");
+    return textures.ref(el, info.Get("index").GetNumberAsInt(), texcoord, ImageEncoding::Linear,
+                        extensions);
+}
+
 MaterialDesc load_material(const GltfContext& ctx, size_t i, TextureTable& textures) {
     const tinygltf::Material& gm = ctx.model.materials[i];
     const std::string el = element("materials", i);
@@ -134,24 +185,30 @@ MaterialDesc load_material(const GltfContext& ctx, size_t i, TextureTable& textu
     const std::string pel = el + ".pbrMetallicRoughness";
     if (pbr.baseColorFactor.size() != 4) ctx.fail(pel, "baseColorFactor must have 4 numbers");
     for (int c = 0; c < 4; ++c) d.base_color[c] = float(pbr.baseColorFactor[size_t(c)]);
-    d.base_color_texture = textures.ref(pel + ".baseColorTexture", pbr.baseColorTexture.index,
-                                        pbr.baseColorTexture.texCoord, ImageEncoding::Srgb);
+    d.base_color_texture =
+        textures.ref(pel + ".baseColorTexture", pbr.baseColorTexture.index,
+                     pbr.baseColorTexture.texCoord, ImageEncoding::Srgb,
+                     pbr.baseColorTexture.extensions);
     d.metallic = float(pbr.metallicFactor);
     d.roughness = float(pbr.roughnessFactor);
     d.metallic_roughness_texture =
         textures.ref(pel + ".metallicRoughnessTexture", pbr.metallicRoughnessTexture.index,
-                     pbr.metallicRoughnessTexture.texCoord, ImageEncoding::Linear);
+                     pbr.metallicRoughnessTexture.texCoord, ImageEncoding::Linear,
+                     pbr.metallicRoughnessTexture.extensions);
 
     d.normal_texture = textures.ref(el + ".normalTexture", gm.normalTexture.index,
-                                    gm.normalTexture.texCoord, ImageEncoding::Linear);
+                                    gm.normalTexture.texCoord, ImageEncoding::Linear,
+                                    gm.normalTexture.extensions);
     d.normal_scale = float(gm.normalTexture.scale);
     d.occlusion_texture = textures.ref(el + ".occlusionTexture", gm.occlusionTexture.index,
-                                       gm.occlusionTexture.texCoord, ImageEncoding::Linear);
+                                       gm.occlusionTexture.texCoord, ImageEncoding::Linear,
+                                       gm.occlusionTexture.extensions);
     d.occlusion_strength = float(gm.occlusionTexture.strength);
     // tinygltf leaves emissiveFactor empty when the file omits it (default black).
     if (!gm.emissiveFactor.empty()) d.emissive = vec3(ctx, el, "emissiveFactor", gm.emissiveFactor);
     d.emissive_texture = textures.ref(el + ".emissiveTexture", gm.emissiveTexture.index,
-                                      gm.emissiveTexture.texCoord, ImageEncoding::Srgb);
+                                      gm.emissiveTexture.texCoord, ImageEncoding::Srgb,
+                                      gm.emissiveTexture.extensions);
 
     if (gm.alphaMode == "OPAQUE")
         d.alpha_mode = AlphaMode::Opaque;
@@ -184,6 +241,14 @@ MaterialDesc load_material(const GltfContext& ctx, size_t i, TextureTable& textu
     // MaterialDesc has no slots for the specular textures; the factors still apply.
     if (spec.Has("specularTexture") || spec.Has("specularColorTexture"))
         ctx.warn_once("materials", "KHR_materials_specular textures are ignored");
+
+    const tinygltf::Value& tr = extension(gm, "KHR_materials_transmission");
+    const std::string tel = xel + "KHR_materials_transmission";
+    d.transmission = number(ctx, tel, tr, "transmissionFactor", 0.0f);
+    if (!(d.transmission >= 0 && d.transmission <= 1))
+        ctx.fail(tel, "transmissionFactor must be in [0, 1]");
+    d.transmission_texture = extension_texture(ctx, tel + ".transmissionTexture", tr,
+                                               "transmissionTexture", textures);
     return d;
 }
 

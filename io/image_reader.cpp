@@ -12,6 +12,7 @@
 #include <iterator>
 
 #include "core/error.h"
+#include "io/color.h"
 
 namespace penumbra {
 
@@ -46,16 +47,6 @@ std::string one_line(std::string s) {
 }
 
 }  // namespace
-
-float srgb_to_linear(float v) {
-    if (v <= 0.04045f) return v / 12.92f;
-    return std::pow((v + 0.055f) / 1.055f, 2.4f);
-}
-
-float linear_to_srgb(float v) {
-    if (v <= 0.0031308f) return v * 12.92f;
-    return 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-}
 
 Image decode_image(const std::vector<uint8_t>& bytes, const std::string& name,
                    ImageEncoding encoding) {
@@ -94,13 +85,8 @@ Image decode_image(const std::vector<uint8_t>& bytes, const std::string& name,
         throw SceneError(name + ": cannot decode image: " + one_line(in->geterror()));
     in->close();
 
-    if (encoding == ImageEncoding::Srgb) {
-        // The transfer applies to colour, never to alpha (glTF 2.0, section 3.9.2).
-        const bool has_alpha = channels == 2 || channels == 4;
-        const int colour = has_alpha ? channels - 1 : channels;
-        for (size_t i = 0; i < img.pixels.size(); i += channels)
-            for (int c = 0; c < colour; ++c) img.pixels[i + c] = srgb_to_linear(img.pixels[i + c]);
-    }
+    // The transfer applies to colour, never to alpha (glTF 2.0, section 3.9.2).
+    if (encoding == ImageEncoding::Srgb) decode_srgb(img);
     return img;
 }
 

@@ -1,5 +1,6 @@
 // Decoding images (files or bytes in memory, any format OpenImageIO reads) into linear
-// float Images. Colour data stored with the sRGB transfer is converted on request.
+// float Images. Colour data stored with the sRGB transfer is converted on request (by
+// io/color.h, the one definition of the sRGB curve).
 #pragma once
 
 #include <cstdint>
@@ -16,9 +17,5 @@ enum class ImageEncoding { Linear, Srgb };
 Image decode_image(const std::vector<uint8_t>& bytes, const std::string& name,
                    ImageEncoding encoding);
 Image read_image(const std::string& path, ImageEncoding encoding);
-
-// The sRGB transfer function and its inverse (IEC 61966-2-1).
-float srgb_to_linear(float v);
-float linear_to_srgb(float v);
 
 }  // namespace penumbra

@@ -17,7 +17,7 @@ struct BsdfSample {
     Spectrum f;      // BSDF value (no cosine); for specular lobes f * |cos| / pdf is the weight
     float pdf = 0;   // solid angle; for specular lobes, the probability of the lobe
     Lobe lobe = Lobe::Diffuse;
-    float eta = 1;
+    float eta = 1;   // refraction: IOR on wi's side over IOR on wo's side; else 1
 
     bool is_specular() const { return lobe == Lobe::Specular; }
     Spectrum weight() const { return f * (std::abs(wi.z) / pdf); }

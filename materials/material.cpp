@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "core/scene/emission.h"
 #include "materials/fresnel.h"
@@ -9,17 +10,19 @@
 namespace penumbra {
 
 const Bsdf* BsdfStorage::get() const {
-    if (auto* b = std::get_if<LambertianBsdf>(&m_v)) return b;
-    if (auto* b = std::get_if<MetalRoughBsdf>(&m_v)) return b;
-    return nullptr;
+    return std::visit(
+        [](const auto& b) -> const Bsdf* {
+            if constexpr (std::is_base_of_v<Bsdf, std::decay_t<decltype(b)>>) return &b;
+            return nullptr;
+        },
+        m_v);
 }
 
 namespace {
 
 Vec4 sample_texture(const Scene& scene, const TextureRef& ref, const SurfacePoint& sp) {
     const Texture& tex = scene.textures[ref.texture];
-    const Vec2 uv = ref.texcoord == 1 ? sp.uv1 : sp.uv0;
-    return lookup(tex, scene.images[tex.image], uv);
+    return lookup(tex, scene.images[tex.image], ref.uv(sp.uv0, sp.uv1));
 }
 
 // Tangent-space normal map (glTF: +X right/u, +Y up/v, Z out) to a world normal.
@@ -72,7 +75,8 @@ bool scene_has_alpha(const Scene& scene) {
     return false;
 }
 
-ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo) {
+ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
+                  const MaterialOptions& options) {
     const MaterialDesc& m = scene.material(sp.material);
     ShadingData sd;
 
@@ -84,7 +88,8 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo) {
         // side; keep the interpolated one there.
         if (dot(mapped, sp.ng) > 0) ns = mapped;
     }
-    const float side = dot(wo, sp.ng) < 0 ? -1.0f : 1.0f;
+    sd.front_face = dot(wo, sp.ng) >= 0;
+    const float side = sd.front_face ? 1.0f : -1.0f;
     const Vec3 ng = sp.ng * side;
     ns = ns * side;
     sd.ng = ng;
@@ -106,20 +111,41 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo) {
 
     sd.emission = emitted_radiance(scene, m, sp.uv0, sp.uv1);
 
+    float transmission = m.transmission;
+    if (transmission > 0 && m.transmission_texture.valid())
+        transmission *= sample_texture(scene, m.transmission_texture, sp).x;
+    transmission = std::clamp(transmission, 0.0f, 1.0f);
+
     const float specular = std::clamp(m.specular, 0.0f, 1.0f);
-    if (metallic == 0 && specular == 0) {
+    if (metallic == 0 && specular == 0 && transmission == 0) {
         // KHR_materials_specular with factor 0 and no metal: exactly Lambertian.
         sd.bsdf.emplace(LambertianBsdf(sd.base_color));
-    } else {
-        MetalRoughParams p;
-        p.base_color = sd.base_color;
-        p.metallic = metallic;
-        p.alpha = roughness * roughness;
-        const Spectrum f0 = m.specular_color * f0_from_ior(m.ior);
-        p.dielectric_f0 = min(f0, Spectrum(1)) * specular;
-        p.dielectric_f90 = specular;
-        sd.bsdf.emplace(MetalRoughBsdf(p));
+        return sd;
     }
+    MetalRoughParams p;
+    p.base_color = sd.base_color;
+    p.metallic = metallic;
+    p.alpha = roughness * roughness;
+    const Spectrum f0 = m.specular_color * f0_from_ior(m.ior);
+    p.dielectric_f0 = min(f0, Spectrum(1)) * specular;
+    p.dielectric_f90 = specular;
+    p.distribution = options.gltf_distribution;
+    if (transmission == 0 || metallic == 1) {
+        sd.bsdf.emplace(MetalRoughBsdf(p));
+        return sd;
+    }
+    // KHR_materials_transmission: a rough dielectric with the material's IOR (exact
+    // Fresnel instead of Schlick) whose refracted light takes the base colour; the
+    // specular extension scales its reflection as it scales glTF's f0 and f90. The
+    // frame faces wo, so the far side has IOR ior when wo is outside, 1/ior inside.
+    DielectricParams d;
+    const float ior = m.ior > 0 ? m.ior : 1.5f;
+    d.eta = sd.front_face ? ior : 1 / ior;
+    d.alpha = p.alpha;
+    d.distribution = options.gltf_distribution;
+    d.reflectance = min(m.specular_color, Spectrum(1)) * specular;
+    d.transmittance = sd.base_color;
+    sd.bsdf.emplace(GltfTransmissionBsdf(p, transmission, d));
     return sd;
 }
 

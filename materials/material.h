@@ -7,8 +7,13 @@
 #include "core/math/frame.h"
 #include "core/scene/scene.h"
 #include "core/surface_point.h"
+#include "materials/conductor.h"
+#include "materials/cook_torrance.h"
+#include "materials/dielectric.h"
+#include "materials/gltf_transmission_bsdf.h"
 #include "materials/lambertian.h"
 #include "materials/metal_rough_bsdf.h"
+#include "materials/oren_nayar.h"
 
 namespace penumbra {
 
@@ -20,7 +25,9 @@ public:
     const Bsdf* get() const;
 
 private:
-    std::variant<std::monostate, LambertianBsdf, MetalRoughBsdf> m_v;
+    std::variant<std::monostate, LambertianBsdf, OrenNayarBsdf, MetalRoughBsdf,
+                 GltfTransmissionBsdf, DielectricBsdf, ConductorBsdf, CookTorranceBsdf>
+        m_v;
 };
 
 struct ShadingData {
@@ -30,10 +37,21 @@ struct ShadingData {
     Spectrum emission;    // Le towards wo
     Spectrum base_color;  // for the albedo AOV and debug views
     float opacity = 1;    // coverage from alphaMode: 1 opaque, 0 a hole, else partial
+    // wo arrives on the side the unflipped geometric normal points to: outside a closed
+    // mesh, so a refracting BSDF goes from IOR 1 into the material (else out of it).
+    bool front_face = true;
+};
+
+// How glTF materials become BSDFs, chosen per render.
+struct MaterialOptions {
+    // The microfacet distribution of glTF's specular lobes: GGX as the spec says, or
+    // Beckmann to compare (--microfacet).
+    MicrofacetType gltf_distribution = MicrofacetType::Ggx;
 };
 
 // wo: unit world direction towards the viewer (-ray.d).
-ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo);
+ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
+                  const MaterialOptions& options = {});
 
 // Coverage of the surface at sp from glTF's alphaMode: OPAQUE is 1, MASK is 0 or 1 by
 // alphaCutoff, BLEND is the alpha itself (rendered as stochastic transparency).

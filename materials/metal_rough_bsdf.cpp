@@ -6,7 +6,7 @@
 namespace penumbra {
 
 MetalRoughBsdf::MetalRoughBsdf(const MetalRoughParams& p)
-    : m_p(p), m_ggx(p.alpha), m_delta(p.alpha < kDeltaAlpha) {}
+    : m_p(p), m_dist(p.distribution, p.alpha), m_delta(p.alpha < kDeltaAlpha) {}
 
 Spectrum MetalRoughBsdf::specular_fresnel(float c) const {
     const Spectrum fd = fresnel_schlick(m_p.dielectric_f0, m_p.dielectric_f90, c);
@@ -38,7 +38,7 @@ Spectrum MetalRoughBsdf::eval(Vec3 wo, Vec3 wi, Transport) const {
     const float vh = std::max(0.0f, dot(wo, h));
     Spectrum f = diffuse_term(vh);
     if (!m_delta) {
-        const float spec = m_ggx.D(h) * m_ggx.G(wo, wi) / (4 * wo.z * wi.z);
+        const float spec = m_dist.D(h) * m_dist.G(wo, wi) / (4 * wo.z * wi.z);
         f += specular_fresnel(vh) * spec;
     }
     return f;
@@ -50,7 +50,7 @@ float MetalRoughBsdf::pdf_specular(Vec3 wo, Vec3 wi) const {
     const float woh = dot(wo, h);
     if (woh <= 0) return 0;
     // Reflection maps h to wi with Jacobian 1 / (4 |wo.h|).
-    return m_ggx.pdf_visible(wo, h) / (4 * woh);
+    return m_dist.pdf_visible(wo, h) / (4 * woh);
 }
 
 float MetalRoughBsdf::pdf(Vec3 wo, Vec3 wi, Transport) const {
@@ -69,7 +69,7 @@ std::optional<BsdfSample> MetalRoughBsdf::sample(Vec3 wo, float u_lobe, Vec2 u,
             // f * cos / pdf must equal F / ps: f = F / cos, pdf = ps.
             return BsdfSample{wi, specular_fresnel(wo.z) / wi.z, ps, Lobe::Specular, 1};
         }
-        const Vec3 h = m_ggx.sample_visible(wo, u);
+        const Vec3 h = m_dist.sample_visible(wo, u);
         const Vec3 wi = reflect(wo, h);
         if (wi.z <= 0) return std::nullopt;
         const float pdf_value = pdf(wo, wi, mode);

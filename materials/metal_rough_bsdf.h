@@ -1,7 +1,7 @@
 // The glTF 2.0 metallic-roughness BRDF (spec Appendix B, with KHR_materials_specular
-// and _ior): a GGX specular lobe with height-correlated Smith masking and Schlick
-// Fresnel, over a Lambertian base weighted by 1 - F. Roughness 0 makes the specular
-// lobe a perfect mirror.
+// and _ior): a GGX (or, for comparisons, Beckmann) specular lobe with height-correlated
+// Smith masking and Schlick Fresnel, over a Lambertian base weighted by 1 - F.
+// Roughness 0 makes the specular lobe a perfect mirror.
 #pragma once
 
 #include "materials/bsdf.h"
@@ -15,6 +15,8 @@ struct MetalRoughParams {
     float alpha = 1;                  // roughness^2
     Spectrum dielectric_f0{0.04f};    // ((ior-1)/(ior+1))^2 * specularColor * specular
     float dielectric_f90 = 1;         // specular factor
+    // GGX as the spec says; Beckmann to compare (the --microfacet switch).
+    MicrofacetType distribution = MicrofacetType::Ggx;
 };
 
 class MetalRoughBsdf final : public Bsdf {
@@ -38,7 +40,7 @@ private:
     float pdf_specular(Vec3 wo, Vec3 wi) const;
 
     MetalRoughParams m_p;
-    GgxDistribution m_ggx;
+    MicrofacetDistribution m_dist;
     bool m_delta;
 };
 

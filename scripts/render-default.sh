@@ -4,4 +4,5 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 scripts/build.sh
-build/bin/penumbra render scenes/cornell-box.gltf -o out/cornell-box.exr --spp 64 "$@"
+# --overwrite: render skips finished outputs (batch resume); this script always renders.
+build/bin/penumbra render scenes/cornell-box.gltf -o out/cornell-box.exr --spp 64 --overwrite "$@"

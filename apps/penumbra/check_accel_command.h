@@ -3,20 +3,19 @@
 // speed, and optionally renders with each one and compares the images.
 #pragma once
 
-#include <string>
-
 #include <CLI/CLI.hpp>
+#include <string>
 
 namespace penumbra {
 
 struct CheckAccelOptions {
     std::string scene;
-    size_t rays = 100000;   // random, shadow and bounce rays, each
+    size_t rays = 100000;  // random, shadow and bounce rays, each
     unsigned long long seed = 1;
     double threshold = 1e-5;  // largest fraction of disagreeing rays that passes
     int width = 256;          // camera rays: one per pixel; also the --images size
     bool images = false;
-    unsigned spp = 4;         // --images
+    unsigned spp = 4;  // --images
 };
 
 void add_check_accel_command(CLI::App& app, CheckAccelOptions& options);

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "apps/penumbra/check_accel_command.h"
+#include "apps/penumbra/converge_command.h"
 #include "apps/penumbra/render_command.h"
 #include "core/log.h"
 
@@ -18,6 +19,10 @@ int main(int argc, char** argv) {
         "Examples:\n"
         "  penumbra render scenes/cornell-box.gltf -o out/cornell-box.exr --spp 64\n"
         "  penumbra render a.gltf b.glb --out-dir renders --width 1024 --integrator path\n"
+        "  penumbra render scenes/*.gltf --out-dir renders --name '{scene}_{camera}.exr'\n"
+        "  penumbra render --job jobs.json --time-limit 60\n"
+        "  penumbra converge scenes/cornell-box.gltf --reference-spp 4096 -o conv \\\n"
+        "      --compare 'independent=--sampler independent;sobol=--sampler sobol'\n"
         "  penumbra check-accel scenes/cornell-box.gltf\n"
         "Run 'penumbra SUBCOMMAND --help' for the options of each subcommand.");
     app.set_version_flag("--version", std::string("penumbra ") + PENUMBRA_VERSION);
@@ -26,6 +31,8 @@ int main(int argc, char** argv) {
     penumbra::add_render_command(app, render_options);
     penumbra::CheckAccelOptions check_accel_options;
     penumbra::add_check_accel_command(app, check_accel_options);
+    penumbra::ConvergeOptions converge_options;
+    penumbra::add_converge_command(app, converge_options);
 
     try {
         app.parse(argc, argv);
@@ -36,6 +43,8 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("render")) return penumbra::run_render_command(render_options);
         if (app.got_subcommand("check-accel"))
             return penumbra::run_check_accel_command(check_accel_options);
+        if (app.got_subcommand("converge"))
+            return penumbra::run_converge_command(converge_options);
     } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;

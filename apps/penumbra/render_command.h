@@ -1,4 +1,5 @@
-// `penumbra render`: options and the per-scene pipeline (load, build, render, write).
+// `penumbra render`: options, the per-image pipeline (set up, render in passes, write)
+// and the batch around it (scenes x frames or a job file, resume, summary table).
 #pragma once
 
 #include <string>
@@ -6,12 +7,22 @@
 
 #include <CLI/CLI.hpp>
 
+#include "io/color.h"
+
 namespace penumbra {
 
 struct RenderCommandOptions {
     std::vector<std::string> scenes;
-    std::string output;   // -o: only with a single scene
+    std::string output;   // -o: a file, or a name template when the batch has several images
     std::string out_dir = "out";
+    std::string name;     // --name template in out_dir; empty: {scene}.exr ({scene}_{frame})
+    std::string job_file;              // --job: JSON batch description
+    std::string frames;                // --frames "1-48", "3", "1,5,10-12"
+    double fps = 24;
+    double time = 0;        // scene time in seconds (a job's "time", or frame / fps)
+    int frame = -1;         // the frame being rendered; -1: none
+    double time_limit = 0;  // seconds per image; 0: none
+    bool overwrite = false; // re-render images whose complete output exists
     bool no_preview = false;
     int width = 0, height = 0;  // 0: derived from the camera's aspect ratio
     unsigned spp = 16;
@@ -20,6 +31,7 @@ struct RenderCommandOptions {
     std::string camera;   // name or index; empty: the first camera, or a default one
     std::string integrator = "path";
     std::string strategy = "mis";
+    std::string microfacet = "ggx";  // glTF specular lobes: ggx | beckmann
     int light_samples = 1, bsdf_samples = 1;
     std::string env;            // equirectangular image
     std::vector<float> env_color;  // constant environment radiance (r g b)
@@ -28,8 +40,19 @@ struct RenderCommandOptions {
     std::string filter = "gaussian";
     std::string accel = "embree";
     int max_depth = 8;
+    // Depth of field overrides (0 / empty: keep the file's values).
+    float fstop = 0, aperture_radius = 0, focus_distance = 0;
+    int aperture_blades = -1;
+    std::vector<float> focus_on;  // raster x y
     bool default_light = true;
     bool quiet = false;
+    // Colour management and EXR output (output_options.cpp).
+    ColorSettings color;
+    std::string aovs;                 // --aov list; empty: none
+    bool half = false;
+    std::string compression = "zip";
+    std::string reference;            // EXR to measure MSE and relMSE against
+    bool timing_metadata = false;     // render time in the header (not reproducible)
 };
 
 void add_render_command(CLI::App& app, RenderCommandOptions& options);

@@ -1,11 +1,12 @@
-// Ray-scene intersection, the one interface integrators see. Implementations (Embree;
-// later our own BVH) return the same Hit, so any result can be cross-checked.
+// Ray-scene intersection, the one interface integrators see. Implementations (Embree,
+// our own BVH and grid) return the same Hit, so any result can be cross-checked.
 #pragma once
 
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <tbb/enumerable_thread_specific.h>
 
@@ -22,18 +23,25 @@ struct AccelStats {
     size_t memory_bytes = 0;   // best estimate of the structure's own memory
 };
 
+// Rays every accelerator answers with a miss without tracing them: a NaN or infinite
+// component, a coordinate beyond 1.844e18 (Embree's FLT_LARGE: its ray.valid() assertion
+// aborts the process on such rays), a zero direction, or a NaN or empty [tmin, tmax].
+bool is_traceable(const Ray& ray);
+
 class Accel {
 public:
     virtual ~Accel() = default;
-    // Closest hit along ray in (tmin, tmax) at ray.time.
+    // Closest hit along ray with tmin <= t <= tmax (Embree's interval in its robust
+    // mode) at ray.time. Untraceable rays (is_traceable) miss.
     std::optional<Hit> intersect(const Ray& ray) const {
         ++m_rays.local();
+        if (!is_traceable(ray)) return std::nullopt;
         return do_intersect(ray);
     }
-    // Any hit in (tmin, tmax): for shadow rays.
+    // Any hit with tmin <= t <= tmax: for shadow rays.
     bool occluded(const Ray& ray) const {
         ++m_rays.local();
-        return do_occluded(ray);
+        return is_traceable(ray) && do_occluded(ray);
     }
     virtual AccelStats stats() const = 0;
     // Rays traced so far, summed over threads.
@@ -47,8 +55,13 @@ private:
     mutable tbb::enumerable_thread_specific<uint64_t> m_rays{0};
 };
 
-enum class AccelType { Embree };
+// Embree, our BVH with each of its split strategies (bvh_build.h), and the uniform grid.
+enum class AccelType { Embree, BvhSah, BvhMedian, BvhCenter, Grid };
+// Accepts the names of accel_type_names(), plus "bvh" for the SAH BVH.
 AccelType parse_accel_type(const std::string& name);
+std::string accel_type_name(AccelType type);
+// Every accelerator, Embree first: "embree", "bvh-sah", "bvh-median", "bvh-center", "grid".
+const std::vector<std::string>& accel_type_names();
 std::unique_ptr<Accel> make_accel(AccelType type, const Scene& scene);
 
 }  // namespace penumbra

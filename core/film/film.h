@@ -1,11 +1,14 @@
 // The image being rendered: per pixel, the weighted sum of radiance samples and of their
-// filter weights. Each pixel is written by one thread at a time (its tile's), in sample
-// order, so the result does not depend on the thread count.
+// filter weights, and the sums behind any AOVs asked for. Each pixel is written by one
+// thread at a time (its tile's), in sample order, so the result does not depend on the
+// thread count.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
+#include "core/film/aov.h"
 #include "core/image.h"
 #include "core/math/vec.h"
 
@@ -13,16 +16,37 @@ namespace penumbra {
 
 class Film {
 public:
-    Film(int width, int height);
+    // AOV buffers are allocated only for the AOVs in `aovs`.
+    Film(int width, int height, AovSet aovs = {});
     int width() const { return m_width; }
     int height() const { return m_height; }
+    const AovSet& aovs() const { return m_aovs; }
     // Adds a sample with filter weight w. Non-finite radiance is counted, not added.
     void add_sample(int x, int y, Spectrum L, float w);
+    // The same, plus what the sample's camera ray hit, weighted by the same w: for a
+    // film with AOVs (the loop without AOVs never pays for them).
+    void add_sample(int x, int y, Spectrum L, float w, const AovRecord& aov);
     // Linear RGBA image, alpha = 1.
     Image resolve() const;
+    // One AOV's image: 3 channels (albedo, normal, position, variance) or 1 (depth,
+    // samples). Albedo and normal average over all samples (a miss counts as zero);
+    // depth and position over the samples that hit (kNoHitDepth and 0 where none did).
+    // Variance is that of the pixel's mean: the weighted sample variance over the
+    // effective sample count (sum w)^2 / sum w^2, less one; 0 below two samples.
+    Image resolve_aov(Aov aov) const;
     uint64_t nonfinite_samples() const;
 
+    // Depth of a pixel that no sample hit (Cycles' background Z).
+    static constexpr float kNoHitDepth = 1e10f;
+
 private:
+    using Sum3 = std::array<double, 3>;
+    // Structure of arrays: an AOV not asked for costs nothing but an empty vector.
+    struct AovSums {
+        std::vector<Sum3> albedo, normal, position, square;      // square: w L^2
+        std::vector<double> weight, hit_weight, depth, weight2;  // weight2: w^2
+        std::vector<uint32_t> count;
+    };
     struct Pixel {
         double sum[3] = {0, 0, 0};
         double weight = 0;
@@ -30,6 +54,8 @@ private:
     };
     int m_width, m_height;
     std::vector<Pixel> m_pixels;
+    AovSet m_aovs;
+    AovSums m_aov;
 };
 
 }  // namespace penumbra

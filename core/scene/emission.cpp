@@ -6,8 +6,7 @@ Spectrum emitted_radiance(const Scene& scene, const MaterialDesc& m, Vec2 uv0, V
     Spectrum e = m.emissive * m.emissive_strength;
     if (m.emissive_texture.valid() && !is_black(e)) {
         const Texture& tex = scene.textures[m.emissive_texture.texture];
-        e *= lookup(tex, scene.images[tex.image], m.emissive_texture.texcoord == 1 ? uv1 : uv0)
-                 .xyz();
+        e *= lookup(tex, scene.images[tex.image], m.emissive_texture.uv(uv0, uv1)).xyz();
     }
     return e;
 }

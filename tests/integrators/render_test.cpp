@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstring>
 
 #include "core/accel/embree_accel.h"
@@ -113,6 +114,95 @@ TEST(Render, ImagesAreBitwiseIdenticalAcrossThreadCounts) {
         opt.seed = 1234;
         EXPECT_NE(0, std::memcmp(a.pixels.data(), d.pixels.data(), a.pixels.size() * 4));
     }
+}
+
+// A scene with edges (anti-aliasing) and indirect light, so every sample matters.
+Scene cube_on_plane() {
+    Scene scene = lit_plane(2.0f, 0.3f);
+    const int mat = test::add_lambertian(scene, Spectrum(0.8f, 0.2f, 0.1f));
+    const uint32_t cube = test::add_cube_object(scene, mat);
+    test::add_instance(scene, cube, Transform::trs({0, 0.5f, 0}, Quat{0, 0.38f, 0, 0.92f}, {1, 1, 1}));
+    return scene;
+}
+
+TEST(Render, PassesAddUpToTheSameImageBitForBit) {
+    const Scene scene = cube_on_plane();
+    EmbreeAccel accel(scene);
+    const LightSet lights(scene, nullptr);
+    const RenderContext ctx{scene, accel, lights};
+    const PerspectiveCamera camera(Transform::look_at({2, 3, 4}, {0, 0.3f, 0}, {0, 1, 0}), 0.7f,
+                                   24, 18);
+    const auto integrator = make_integrator("path", {});
+    RenderOptions opt;
+    opt.spp = 7;
+    opt.progress = false;
+    for (SamplerType type : {SamplerType::Independent, SamplerType::Stratified,
+                             SamplerType::Sobol}) {
+        opt.sampler = type;
+        Film whole(24, 18), split(24, 18);
+        ASSERT_TRUE(render_samples(ctx, camera, *integrator, opt, whole, 0, 7));
+        ASSERT_TRUE(render_samples(ctx, camera, *integrator, opt, split, 0, 3));
+        ASSERT_TRUE(render_samples(ctx, camera, *integrator, opt, split, 3, 7));
+        RenderStats stats;
+        const Image passes = render(ctx, camera, *integrator, opt, &stats).resolve();
+        EXPECT_EQ(stats.spp, 7u);
+        EXPECT_GT(stats.passes, 1);  // render() itself works in passes
+        const Image a = whole.resolve(), b = split.resolve();
+        EXPECT_EQ(0, std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * 4));
+        EXPECT_EQ(0, std::memcmp(a.pixels.data(), passes.pixels.data(), a.pixels.size() * 4));
+        // Not vacuous: a pass of the other samples alone differs.
+        Film tail(24, 18);
+        ASSERT_TRUE(render_samples(ctx, camera, *integrator, opt, tail, 3, 7));
+        const Image c = tail.resolve();
+        EXPECT_NE(0, std::memcmp(a.pixels.data(), c.pixels.data(), a.pixels.size() * 4));
+    }
+}
+
+TEST(Render, InterruptsAndTimeLimitStopBetweenPasses) {
+    const Scene scene = cube_on_plane();
+    EmbreeAccel accel(scene);
+    const LightSet lights(scene, nullptr);
+    const RenderContext ctx{scene, accel, lights};
+    const PerspectiveCamera camera(Transform::look_at({2, 3, 4}, {0, 0.3f, 0}, {0, 1, 0}), 0.7f,
+                                   16, 12);
+    const auto integrator = make_integrator("path", {});
+    RenderOptions opt;
+    opt.spp = 64;
+    opt.progress = false;
+    std::atomic<int> interrupts{1};
+    opt.interrupts = &interrupts;
+    RenderStats stats;
+    render(ctx, camera, *integrator, opt, &stats);
+    EXPECT_EQ(stats.spp, 0u);  // asked to stop before the first pass
+    EXPECT_TRUE(stats.interrupted);
+    EXPECT_FALSE(stats.aborted);
+    interrupts = 2;  // a second Ctrl-C abandons even the pass under way
+    Film film(16, 12);
+    EXPECT_FALSE(render_samples(ctx, camera, *integrator, opt, film, 0, 4));
+
+    // A time limit already spent still renders the first pass, and only that.
+    opt.interrupts = nullptr;
+    opt.time_limit = 1e-9;
+    render(ctx, camera, *integrator, opt, &stats);
+    EXPECT_EQ(stats.spp, 1u);
+    EXPECT_EQ(stats.passes, 1);
+    EXPECT_FALSE(stats.interrupted);
+}
+
+TEST(Render, PassSizesDoubleWithinTheBudgetPassLengthAndTimeLimit) {
+    EXPECT_EQ(next_pass_samples(0, 16, 0, 0), 1u);
+    EXPECT_EQ(next_pass_samples(1, 16, 0.01, 0), 1u);
+    EXPECT_EQ(next_pass_samples(2, 16, 0.02, 0), 2u);
+    EXPECT_EQ(next_pass_samples(4, 16, 0.04, 0), 4u);
+    EXPECT_EQ(next_pass_samples(8, 10, 0.08, 0), 2u);   // the budget
+    EXPECT_EQ(next_pass_samples(16, 16, 0.16, 0), 0u);  // done
+    // 1 s per sample: passes of at most 2 s, so Ctrl-C is answered within one.
+    EXPECT_EQ(next_pass_samples(8, 100, 8, 0, 2.0), 2u);
+    EXPECT_EQ(next_pass_samples(8, 100, 80, 0, 2.0), 1u);  // at least one sample
+    // Time limit: nothing that is predicted to end after it.
+    EXPECT_EQ(next_pass_samples(4, 100, 4, 7.5, 10.0), 3u);
+    EXPECT_EQ(next_pass_samples(4, 100, 4, 4.9, 10.0), 0u);
+    EXPECT_EQ(next_pass_samples(0, 100, 0, 1e-9), 1u);  // the first pass always runs
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <iterator>
 
 #include "io/gltf_loader.h"
+#include "io/color.h"
 #include "io/image_reader.h"
 #include "io/image_writer.h"
 #include "support/gltf_builder.h"

@@ -8,6 +8,7 @@
 #include <iterator>
 
 #include "core/error.h"
+#include "io/color.h"
 #include "io/image_writer.h"
 #include "support/gltf_builder.h"
 

@@ -28,11 +28,11 @@ inline std::vector<CheckRay> agreement_rays(const Scene& scene, const Accel& ref
 }
 
 // Every accelerator type against Embree on the same rays: no "other" disagreement and
-// at most 1e-5 of the rays disagreeing on edges, vertices or grazing hits (coincident
-// faces give two right answers and are not counted). Returns the reports.
+// at most `threshold` of the rays disagreeing on edges, vertices or grazing hits
+// (coincident faces give two right answers and are not counted). Returns the reports.
 inline std::vector<AgreementReport> expect_agreement(const Scene& scene, size_t random,
-                                                     size_t surface,
-                                                     const std::string& label) {
+                                                     size_t surface, const std::string& label,
+                                                     double threshold = 1e-5) {
     const EmbreeAccel embree(scene);
     const std::vector<CheckRay> rays = agreement_rays(scene, embree, random, surface);
     const TraceResults reference = trace_rays(embree, rays);
@@ -44,7 +44,7 @@ inline std::vector<AgreementReport> expect_agreement(const Scene& scene, size_t 
             compare_results(scene, rays, reference, trace_rays(*accel, rays), "embree", name);
         std::string examples;
         for (const std::string& e : rep.examples) examples += "\n  " + e;
-        EXPECT_TRUE(rep.passes(1e-5))
+        EXPECT_TRUE(rep.passes(threshold))
             << label << ": " << name << ": " << rep.disagreements() << " of " << rep.rays
             << " rays disagree (" << rep.count(Disagreement::Other) << " other)" << examples;
         reports.push_back(std::move(rep));

@@ -60,8 +60,8 @@ Scene make_instanced_spheres(int n, uint64_t seed) {
     for (int i = 0; i < n; ++i) {
         Quat q{u() - 0.5f, u() - 0.5f, u() - 0.5f, u() - 0.5f};
         Vec3 s(0.3f + u(), 0.3f + u(), 0.3f + 2 * u());  // non-uniform
-        if (i % 3 == 0) s.x = -s.x;                       // mirrored
-        if (i % 5 == 0) s = Vec3(0.7f, -0.7f, -0.7f);     // mirrored twice over
+        if (i % 3 == 0) s.x = -s.x;                      // mirrored
+        if (i % 5 == 0) s = Vec3(0.7f, -0.7f, -0.7f);    // mirrored twice over
         const Vec3 t(10 * u() - 5, 10 * u() - 5, 10 * u() - 5);
         add_instance(scene, i % 4 == 3 ? cube : sphere, Transform::trs(t, q, s));
     }

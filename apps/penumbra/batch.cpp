@@ -1,0 +1,162 @@
+#include "apps/penumbra/batch.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include "core/accel/accel.h"
+#include "core/error.h"
+#include "core/film/filter.h"
+#include "core/progress.h"
+#include "core/sampling/sampler.h"
+#include "integrators/integrator.h"
+#include "io/job_file.h"
+#include "io/render_output.h"
+
+namespace penumbra {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void apply(const JobSettings& s, RenderCommandOptions& o) {
+    if (s.camera) o.camera = *s.camera;
+    if (s.integrator) o.integrator = *s.integrator;
+    if (s.strategy) o.strategy = *s.strategy;
+    if (s.sampler) o.sampler = *s.sampler;
+    if (s.filter) o.filter = *s.filter;
+    if (s.accel) o.accel = *s.accel;
+    if (s.output) o.output = *s.output;
+    if (s.out_dir) o.out_dir = *s.out_dir;
+    if (s.name) o.name = *s.name;
+    if (s.width) o.width = *s.width;
+    if (s.height) o.height = *s.height;
+    if (s.max_depth) o.max_depth = *s.max_depth;
+    if (s.spp) o.spp = *s.spp;
+    if (s.seed) o.seed = *s.seed;
+    if (s.time_limit) o.time_limit = *s.time_limit;
+    if (s.fps) o.fps = *s.fps;
+    // A single frame or time replaces an inherited frame range, and the other way round.
+    if (s.frames) {
+        o.frames = *s.frames;
+        o.frame = -1;
+    }
+    if (s.frame) {
+        o.frames = std::to_string(*s.frame);
+    } else if (s.time) {
+        o.frames.clear();
+        o.time = *s.time;
+    }
+}
+
+// Option values the command line checks with CLI11 but a job file can spell freely.
+void validate(const RenderCommandOptions& o, const std::string& where) {
+    try {
+        parse_sampler_type(o.sampler);
+        parse_light_strategy(o.strategy);
+        parse_accel_type(o.accel);
+        make_filter(o.filter);
+        bool known = false;
+        for (const auto& [name, desc] : integrator_names()) known = known || name == o.integrator;
+        if (!known) throw std::invalid_argument("unknown integrator '" + o.integrator + "'");
+        expand_output_name(o.output.empty() ? o.name : o.output, {});
+    } catch (const std::invalid_argument& e) {
+        throw SceneError(where + ": " + e.what());
+    }
+}
+
+// One job per frame of the options' frame list, or one for the options' time.
+void add_jobs(const std::string& scene, const RenderCommandOptions& o, const std::string& where,
+              std::vector<BatchJob>& jobs) {
+    BatchJob job{scene, o, where, 0};
+    if (job.options.name.empty())
+        job.options.name = o.frames.empty() ? "{scene}.exr" : "{scene}_{frame}.exr";
+    validate(job.options, where.empty() ? "options" : where);
+    if (o.frames.empty()) {
+        job.options.frame = -1;
+        jobs.push_back(job);
+        return;
+    }
+    std::vector<int> frames;
+    try {
+        frames = parse_frame_list(o.frames);
+    } catch (const std::invalid_argument& e) {
+        throw SceneError((where.empty() ? std::string("--frames") : where) + ": " + e.what());
+    }
+    for (int f : frames) {
+        job.options.frame = f;
+        job.options.time = f / o.fps;
+        jobs.push_back(job);
+    }
+}
+
+}  // namespace
+
+std::vector<BatchJob> plan_batch(const RenderCommandOptions& o) {
+    std::vector<BatchJob> jobs;
+    if (!o.job_file.empty()) {
+        const JobFile file = read_job_file(o.job_file);
+        RenderCommandOptions defaults = o;
+        apply(file.defaults, defaults);
+        for (const JobEntry& entry : file.jobs) {
+            RenderCommandOptions merged = defaults;
+            apply(entry.settings, merged);
+            add_jobs(entry.scene, merged, entry.where, jobs);
+        }
+    }
+    for (const std::string& scene : o.scenes) add_jobs(scene, o, "", jobs);
+    if (jobs.empty()) throw SceneError("nothing to render: give scene files or --job FILE");
+    for (size_t i = 0; i < jobs.size(); ++i) jobs[i].index = i;
+    if (!o.output.empty() && o.output.find('{') == std::string::npos && o.job_file.empty() &&
+        jobs.size() > 1)
+        throw SceneError("-o names one file, but the batch has " + std::to_string(jobs.size()) +
+                         " images; use --out-dir (and --name), or placeholders in -o");
+    return jobs;
+}
+
+bool output_needs_camera(const BatchJob& job) {
+    const RenderCommandOptions& o = job.options;
+    return uses_placeholder(o.output.empty() ? o.name : o.output, "camera");
+}
+
+std::string output_path(const BatchJob& job, const std::string& camera) {
+    const RenderCommandOptions& o = job.options;
+    OutputNameFields fields;
+    fields.scene = fs::path(job.scene).stem().string();
+    fields.camera = camera;
+    // A still image's {frame} is the frame its time falls on.
+    fields.frame = o.frame >= 0 ? o.frame : static_cast<int>(std::lround(o.time * o.fps));
+    fields.index = job.index;
+    if (!o.output.empty()) return expand_output_name(o.output, fields);
+    return (fs::path(o.out_dir) / expand_output_name(o.name, fields)).string();
+}
+
+void print_summary(const std::vector<JobResult>& results) {
+    size_t width = 5;
+    for (const JobResult& r : results)
+        width = std::max(width, fs::path(r.scene).filename().string().size());
+    std::printf("%-*s  %5s  %-7s  %8s  %7s  %8s  %s\n", int(width), "scene", "frame", "status",
+                "time", "spp", "rays/s", "output / error");
+    size_t counts[4] = {0, 0, 0, 0};
+    for (const JobResult& r : results) {
+        static const char* const kStatus[] = {"ok", "partial", "failed", "skipped"};
+        ++counts[int(r.status)];
+        const bool ran = r.status == JobStatus::Ok || r.status == JobStatus::Partial;
+        const std::string frame = r.frame >= 0 ? std::to_string(r.frame) : "-";
+        const std::string rate =
+            ran && r.seconds > 0 ? format_count(r.rays / r.seconds) : std::string("-");
+        const std::string note =
+            r.message.empty() ? r.output : (r.output.empty() ? "" : r.output + ": ") + r.message;
+        std::printf("%-*s  %5s  %-7s  %8s  %7s  %8s  %s\n", int(width),
+                    fs::path(r.scene).filename().string().c_str(), frame.c_str(),
+                    kStatus[int(r.status)], ran ? format_duration(r.seconds).c_str() : "-",
+                    ran ? std::to_string(r.spp).c_str() : "-", rate.c_str(), note.c_str());
+    }
+    std::printf("%zu images: %zu ok, %zu partial, %zu failed, %zu skipped\n", results.size(),
+                counts[0], counts[1], counts[2], counts[3]);
+    std::fflush(stdout);
+}
+
+}  // namespace penumbra

@@ -1,0 +1,43 @@
+// A batch of images: the scenes (times frames) from the command line and a job file,
+// each with its merged options and output path, and the summary table at the end.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "apps/penumbra/render_command.h"
+
+namespace penumbra {
+
+struct BatchJob {
+    std::string scene;
+    RenderCommandOptions options;  // command line < job file defaults < job entry
+    std::string where;             // "jobs.json: jobs[2]" for job file entries
+    size_t index = 0;              // position in the batch, from 0 ({index})
+};
+
+// Expands scenes x frames and the job file's entries, in order. Throws SceneError for a
+// bad job file, frame list or option value, before anything renders.
+std::vector<BatchJob> plan_batch(const RenderCommandOptions& o);
+
+// The job's output: -o or the job's "output" (both may hold placeholders), else
+// out_dir/name. The camera name is only known once the scene is loaded.
+std::string output_path(const BatchJob& job, const std::string& camera);
+bool output_needs_camera(const BatchJob& job);
+
+enum class JobStatus { Ok, Partial, Failed, Skipped };
+
+struct JobResult {
+    std::string scene, output, message;  // message: the error, or why it was skipped
+    int frame = -1;
+    JobStatus status = JobStatus::Failed;
+    double seconds = 0;  // rendering only
+    uint32_t spp = 0;
+    uint64_t rays = 0;
+};
+
+// One row per job: scene, frame, status, time, spp, rays/s, and the output or error.
+void print_summary(const std::vector<JobResult>& results);
+
+}  // namespace penumbra

@@ -1,0 +1,287 @@
+#include "apps/penumbra/converge_command.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "apps/penumbra/scene_setup.h"
+#include "apps/penumbra/svg_plot.h"
+#include "core/convergence.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "core/progress.h"
+#include "io/render_writer.h"
+#include "io/image_writer.h"
+
+namespace penumbra {
+
+namespace fs = std::filesystem;
+
+void add_converge_command(CLI::App& app, ConvergeOptions& o) {
+    CLI::App* cmd = app.add_subcommand(
+        "converge",
+        "Measure error against time: render at doubling spp (or time checkpoints) in one or "
+        "more configurations, compare with a reference, write CSV, SVG plot and summary");
+    cmd->add_option("scene", o.scene, "Scene file (.gltf or .glb)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    auto* ref = cmd->add_option("--reference", o.reference, "Reference EXR (sets the size)")
+                    ->check(CLI::ExistingFile);
+    cmd->add_option("--reference-spp", o.reference_spp,
+                    "Render the reference first with this many spp (another seed), saved as "
+                    "OUT_DIR/reference.exr")
+        ->check(CLI::Range(1u, 1u << 24))
+        ->excludes(ref);
+    cmd->add_option("-o,--out-dir", o.out_dir,
+                    "Folder for convergence.csv, convergence.svg, summary.txt")
+        ->required();
+    cmd->add_option("--max-spp", o.max_spp,
+                    "Largest sample count (also the sampler's layout with --times)")
+        ->capture_default_str()
+        ->check(CLI::Range(1u, 1u << 24));
+    cmd->add_option("--min-spp", o.min_spp, "First sample count; doubled up to --max-spp")
+        ->capture_default_str()
+        ->check(CLI::Range(1u, 1u << 24));
+    cmd->add_option("--times", o.times,
+                    "Time checkpoints in seconds instead of doubling spp: one render with "
+                    "that --time-limit each")
+        ->delimiter(',')
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--compare", o.compare,
+                    "Configurations 'name=OPTIONS;name=OPTIONS', OPTIONS being image options, "
+                    "e.g. 'mis=--strategy mis;bsdf=--strategy bsdf'");
+    cmd->add_option("--config", o.configs, "A configuration NAME:OPTIONS (repeatable)");
+    cmd->add_option("--target-relmse", o.target_relmse,
+                    "Report the time each configuration takes to reach this relMSE")
+        ->capture_default_str()
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--relmse-epsilon", o.epsilon,
+                    "relMSE = mean((x - r)^2 / (r^2 + epsilon)); epsilon keeps black pixels "
+                    "from dominating")
+        ->capture_default_str()
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--clock", o.clock,
+                    "Time for the plot, MSE*time and the time to the target: wall (elapsed) "
+                    "or cpu (CPU time of all threads, steadier on a busy machine)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"wall", "cpu"}));
+    add_image_options(cmd, o.base);
+    cmd->add_flag("-q,--quiet", o.base.quiet, "Only print errors and the summary");
+}
+
+namespace {
+
+struct Config {
+    std::string name;
+    RenderCommandOptions options;
+};
+
+struct Checkpoint {
+    uint32_t spp = 0;
+    double seconds = 0, cpu_seconds = 0, mse = 0, relmse = 0;
+    double time(const std::string& clock) const { return clock == "cpu" ? cpu_seconds : seconds; }
+};
+
+std::string trim(const std::string& s) {
+    const size_t a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
+    return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
+// A configuration is the base options with its own image options parsed over them.
+Config parse_config(const RenderCommandOptions& base, const std::string& name,
+                    const std::string& args) {
+    Config c{trim(name), base};
+    if (c.name.empty()) throw SceneError("configuration '" + args + "' has no name");
+    CLI::App parser{"configuration " + c.name};
+    add_image_options(&parser, c.options);
+    try {
+        parser.parse(args, false);
+    } catch (const CLI::ParseError& e) {
+        throw SceneError("configuration '" + c.name + "' (" + args + "): " + e.what());
+    }
+    return c;
+}
+
+std::vector<Config> configs_of(const ConvergeOptions& o) {
+    std::vector<Config> configs;
+    std::stringstream items(o.compare);
+    std::string item;
+    while (std::getline(items, item, ';')) {
+        if (trim(item).empty()) continue;
+        const size_t eq = item.find('=');
+        if (eq == std::string::npos)
+            throw SceneError("--compare '" + item + "': expected name=OPTIONS");
+        configs.push_back(parse_config(o.base, item.substr(0, eq), item.substr(eq + 1)));
+    }
+    for (const std::string& c : o.configs) {
+        const size_t colon = c.find(':');
+        if (colon == std::string::npos)
+            throw SceneError("--config '" + c + "': expected NAME:OPTIONS");
+        configs.push_back(parse_config(o.base, c.substr(0, colon), c.substr(colon + 1)));
+    }
+    if (configs.empty()) configs.push_back({"default", o.base});
+    return configs;
+}
+
+Image render_image(const SceneSetup& s, const RenderOptions& ropt, RenderStats& stats) {
+    return render(s.context(), *s.camera, *s.integrator, ropt, &stats).resolve();
+}
+
+Image render_reference(const ConvergeOptions& o, const RenderCommandOptions& base) {
+    RenderCommandOptions ro = base;
+    ro.spp = o.reference_spp;
+    // Other sample streams than the measured renders: sharing their first samples would
+    // correlate reference and image and understate the error.
+    ro.seed = base.seed ^ 0x9e3779b97f4a7c15ull;
+    const std::unique_ptr<SceneSetup> s = setup_scene(ro, o.scene);
+    RenderStats stats;
+    const Image ref = render_image(*s, render_options_for(ro, "reference"), stats);
+    const std::string path = (fs::path(o.out_dir) / "reference.exr").string();
+    write_exr(path, ref, {{"penumbra:scene", o.scene},
+                          {"penumbra:spp", std::to_string(stats.spp)},
+                          {"penumbra:seed", std::to_string(ro.seed)},
+                          {"penumbra:sampler", ro.sampler},
+                          {"penumbra:integrator", ro.integrator}});
+    if (!base.quiet)
+        std::printf("reference: %u spp in %s -> %s\n", stats.spp,
+                    format_duration(stats.seconds).c_str(), path.c_str());
+    return ref;
+}
+
+std::vector<Checkpoint> measure(const ConvergeOptions& o, const Config& c, const Image& ref) {
+    const std::unique_ptr<SceneSetup> s = setup_scene(c.options, o.scene);
+    if (s->width != ref.width || s->height != ref.height)
+        throw SceneError("configuration '" + c.name + "' renders " + std::to_string(s->width) +
+                         "x" + std::to_string(s->height) + " but the reference is " +
+                         std::to_string(ref.width) + "x" + std::to_string(ref.height));
+    std::vector<RenderOptions> runs;
+    RenderOptions ropt = render_options_for(c.options, c.name);
+    ropt.progress = false;
+    if (o.times.empty()) {
+        for (uint64_t spp = o.min_spp; spp <= o.max_spp; spp *= 2) {
+            ropt.spp = static_cast<uint32_t>(spp);
+            runs.push_back(ropt);
+        }
+    } else {
+        ropt.spp = o.max_spp;
+        for (double t : o.times) {
+            ropt.time_limit = t;
+            runs.push_back(ropt);
+        }
+    }
+    std::vector<Checkpoint> points;
+    for (const RenderOptions& run : runs) {
+        RenderStats stats;
+        const double cpu0 = process_cpu_seconds();
+        const Image img = render_image(*s, run, stats);
+        Checkpoint p{stats.spp, stats.seconds, process_cpu_seconds() - cpu0,
+                     mean_squared_error(img, ref), relative_mse(img, ref, o.epsilon)};
+        points.push_back(p);
+        if (!c.options.quiet)
+            std::printf("%-14s %7u spp %8s (cpu %8s)  MSE %.4e  relMSE %.4e\n",
+                        c.name.c_str(), p.spp, format_duration(p.seconds).c_str(),
+                        format_duration(p.cpu_seconds).c_str(), p.mse, p.relmse);
+        std::fflush(stdout);
+    }
+    return points;
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    if (!out.good()) throw SceneError(path.string() + ": cannot write");
+}
+
+std::string fmt(const char* format, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
+}
+
+// One line of the summary table.
+std::string row(const std::string& config, const std::string& spp, const std::string& time,
+                const std::string& mse, const std::string& relmse, const std::string& mse_time,
+                const std::string& slope, const std::string& reach) {
+    char line[512];
+    std::snprintf(line, sizeof line, "%-14s %7s %9s %11s %11s %11s %7s  %s\n", config.c_str(),
+                  spp.c_str(), time.c_str(), mse.c_str(), relmse.c_str(), mse_time.c_str(),
+                  slope.c_str(), reach.c_str());
+    return line;
+}
+
+}  // namespace
+
+int run_converge_command(const ConvergeOptions& o) {
+    if (o.base.quiet) set_log_level(LogLevel::Error);
+    if (o.reference.empty() && o.reference_spp == 0)
+        throw SceneError("converge needs --reference REF.exr or --reference-spp N");
+    if (o.min_spp > o.max_spp) throw SceneError("--min-spp is larger than --max-spp");
+    fs::create_directories(o.out_dir);
+    ConvergeOptions opts = o;
+    Image ref;
+    if (!o.reference.empty()) {
+        ref = read_beauty(o.reference);
+        // The reference decides the size unless the user did.
+        if (o.base.width == 0 && o.base.height == 0) {
+            opts.base.width = ref.width;
+            opts.base.height = ref.height;
+        }
+    }
+    const std::vector<Config> configs = configs_of(opts);
+    if (o.reference.empty()) ref = render_reference(opts, opts.base);
+
+    // mse_x_time and relmse_x_time: inverse efficiency, with the --clock time.
+    std::string csv =
+        "config,spp,seconds,cpu_seconds,mse,relmse,mse_x_time,relmse_x_time\n";
+    std::string table = row("config", "spp", o.clock + " s", "MSE", "relMSE", "MSE*s", "slope",
+                            "time to relMSE " + fmt("%g", o.target_relmse));
+    std::vector<PlotSeries> series;
+    for (const Config& c : configs) {
+        const std::vector<Checkpoint> points = measure(opts, c, ref);
+        PlotSeries plot{c.name, {}, {}};
+        std::vector<double> spp, mse;
+        for (const Checkpoint& p : points) {
+            const double t = p.time(o.clock);
+            csv += c.name + "," + std::to_string(p.spp) + fmt(",%.6g", p.seconds) +
+                   fmt(",%.6g", p.cpu_seconds) + fmt(",%.6g", p.mse) + fmt(",%.6g", p.relmse) +
+                   fmt(",%.6g", p.mse * t) + fmt(",%.6g", p.relmse * t) + "\n";
+            plot.x.push_back(t);
+            plot.y.push_back(p.relmse);
+            spp.push_back(p.spp);
+            mse.push_back(p.mse);
+        }
+        const std::optional<double> slope = log_log_slope(spp, mse);
+        const std::optional<TimeToError> reach = time_to_error(plot.x, plot.y, o.target_relmse);
+        const Checkpoint& last = points.back();
+        const double t = last.time(o.clock);
+        table += row(c.name, std::to_string(last.spp), fmt("%.3f", t), fmt("%.4e", last.mse),
+                     fmt("%.4e", last.relmse), fmt("%.4e", last.mse * t),
+                     slope ? fmt("%.3f", *slope) : "-",
+                     reach ? fmt("%.3g s", reach->seconds) +
+                                 (reach->extrapolated ? " (extrapolated)" : "")
+                           : "not reached");
+        series.push_back(std::move(plot));
+    }
+    const std::string summary =
+        "penumbra converge " + o.scene + ": " + std::to_string(ref.width) + "x" +
+        std::to_string(ref.height) + ", reference " +
+        (o.reference.empty() ? std::to_string(o.reference_spp) + " spp (rendered)"
+                             : o.reference) +
+        ", relMSE epsilon " + fmt("%g", o.epsilon) + ", " + o.clock + " clock\n" +
+        "last checkpoint per configuration; slope: least-squares fit of log(MSE) against "
+        "log(spp)\n" + table;
+    const fs::path dir(o.out_dir);
+    write_text(dir / "convergence.csv", csv);
+    write_text(dir / "convergence.svg",
+               log_log_plot_svg(series, {"Convergence: " + fs::path(o.scene).filename().string(),
+                                         "render time (s, " + o.clock + " clock)", "relMSE"}));
+    write_text(dir / "summary.txt", summary);
+    std::printf("%s", summary.c_str());
+    std::printf("wrote %s, %s, %s\n", (dir / "convergence.csv").c_str(),
+                (dir / "convergence.svg").c_str(), (dir / "summary.txt").c_str());
+    return 0;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,34 @@
+// `penumbra converge`: speed against error. Renders a scene at doubling sample counts
+// (or time checkpoints) in one or more configurations, measures each image against a
+// reference, and writes convergence.csv, a log-log convergence.svg and summary.txt.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "apps/penumbra/render_command.h"
+
+namespace penumbra {
+
+struct ConvergeOptions {
+    std::string scene;
+    std::string reference;        // an EXR to compare against
+    unsigned reference_spp = 0;   // or: render the reference first, with this many spp
+    std::string out_dir;          // -o
+    unsigned max_spp = 64, min_spp = 1;
+    std::vector<double> times;    // time checkpoints in seconds, instead of doubling spp
+    std::string compare;          // "name=OPTIONS;name=OPTIONS"
+    std::vector<std::string> configs;  // "NAME:OPTIONS", repeatable
+    double target_relmse = 1e-2;
+    double epsilon = 1e-2;        // relMSE = mean((x - r)^2 / (r^2 + epsilon))
+    std::string clock = "wall";   // time for plot and efficiency: wall | cpu
+    RenderCommandOptions base;    // the image options every configuration starts from
+};
+
+void add_converge_command(CLI::App& app, ConvergeOptions& options);
+// Returns the exit status.
+int run_converge_command(const ConvergeOptions& options);
+
+}  // namespace penumbra

@@ -1,0 +1,274 @@
+#include "apps/penumbra/scene_setup.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+
+#include "core/camera/autofocus.h"
+#include "core/camera/default_camera.h"
+#include "core/camera/thin_lens_camera.h"
+#include "core/error.h"
+#include "core/lights/directional_light.h"
+#include "core/log.h"
+#include "io/gltf_loader.h"
+#include "io/image_reader.h"
+#include "io/scene_color.h"
+#include "materials/material.h"
+
+namespace penumbra {
+
+void add_image_options(CLI::App* cmd, RenderCommandOptions& o) {
+    cmd->add_option("--width", o.width,
+                    "Image width in pixels (default 640, or from --height and the camera's "
+                    "aspect ratio)")
+        ->check(CLI::Range(1, 1 << 15));
+    cmd->add_option("--height", o.height,
+                    "Image height in pixels (default: from the width and the camera's aspect "
+                    "ratio, else 4:3)")
+        ->check(CLI::Range(1, 1 << 15));
+    cmd->add_option("--spp", o.spp, "Samples per pixel")->capture_default_str()->check(
+        CLI::Range(1u, 1u << 24));
+    cmd->add_option("--threads", o.threads, "Worker threads (0: all cores)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 4096));
+    cmd->add_option("--seed", o.seed, "Random seed; the same seed gives the same image")
+        ->capture_default_str();
+    cmd->add_option("--camera", o.camera,
+                    "Camera by name or index (default: the first camera in the file, else "
+                    "one framing the whole scene)");
+    std::string integrator_help = "Integrator:";
+    std::vector<std::string> integrator_list;
+    for (const auto& [name, desc] : integrator_names()) {
+        integrator_help += "\n  " + name + ": " + desc;
+        integrator_list.push_back(name);
+    }
+    cmd->add_option("--integrator", o.integrator, integrator_help)
+        ->capture_default_str()
+        ->check(CLI::IsMember(integrator_list));
+    cmd->add_option("--sampler", o.sampler, "Pixel sampler")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"independent", "stratified", "sobol"}));
+    cmd->add_option("--filter", o.filter, "Pixel reconstruction filter")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"box", "gaussian", "blackman-harris"}));
+    cmd->add_option("--accel", o.accel, "Ray intersection accelerator")
+        ->capture_default_str()
+        ->check(CLI::IsMember(
+            {"embree", "bvh", "bvh-sah", "bvh-median", "bvh-center", "grid"}));
+    cmd->add_option("--strategy", o.strategy,
+                    "path: estimators for area and environment light: mis (both, combined), "
+                    "bsdf (BSDF sampling only) or light (light sampling only)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"mis", "bsdf", "light"}));
+    cmd->add_option("--microfacet", o.microfacet,
+                    "Microfacet distribution of glTF materials: ggx (the spec's) or beckmann")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"ggx", "beckmann"}));
+    cmd->add_option("--light-samples", o.light_samples,
+                    "direct: shadow rays per shading point")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1 << 16));
+    cmd->add_option("--bsdf-samples", o.bsdf_samples, "direct: BSDF samples per shading point")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1 << 16));
+    cmd->add_option("--max-depth", o.max_depth,
+                    "path: maximum bounces; basic/direct: maximum specular recursion")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1024));
+    cmd->add_option("--env", o.env,
+                    "Environment: an equirectangular HDR/EXR image (+Y up), importance-sampled")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--env-color", o.env_color, "Environment: constant radiance R G B")
+        ->expected(3);
+    cmd->add_option("--env-intensity", o.env_intensity, "Scale of the environment radiance")
+        ->capture_default_str();
+    cmd->add_option("--env-rotation", o.env_rotation,
+                    "Rotation of the environment image about +Y, in degrees")
+        ->capture_default_str();
+    cmd->add_option("--fstop", o.fstop,
+                    "Depth of field: f-number (aperture from the focal length of the camera's "
+                    "field of view and its sensor, 24 mm high unless the file says otherwise)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--aperture-radius", o.aperture_radius,
+                    "Depth of field: lens aperture radius in scene units (0: pinhole)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--focus-distance", o.focus_distance,
+                    "Depth of field: distance of the plane of focus along the view axis")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--focus-on", o.focus_on,
+                    "Depth of field: focus on the surface seen through pixel X Y")
+        ->expected(2);
+    cmd->add_option("--aperture-blades", o.aperture_blades,
+                    "Depth of field: aperture blades (0: circular, >= 3: polygonal bokeh)")
+        ->check(CLI::Range(0, 64));
+    cmd->add_flag("!--no-default-light", o.default_light,
+                  "Do not light scenes that have no lights of their own (otherwise: a key "
+                  "light and a dim uniform environment)");
+}
+
+namespace {
+
+const CameraDesc* find_camera(const Scene& scene, const std::string& wanted) {
+    for (const CameraDesc& c : scene.cameras)
+        if (c.name == wanted) return &c;
+    char* end = nullptr;
+    const long index = std::strtol(wanted.c_str(), &end, 10);
+    if (!wanted.empty() && end && *end == '\0' && index >= 0 &&
+        index < static_cast<long>(scene.cameras.size()))
+        return &scene.cameras[index];
+    std::string names;
+    for (size_t i = 0; i < scene.cameras.size(); ++i)
+        names += (i ? ", " : "") + std::to_string(i) + " '" + scene.cameras[i].name + "'";
+    throw SceneError(scene.source + ": no camera '" + wanted + "' (the file has " +
+                     (names.empty() ? std::string("no cameras") : names) + ")");
+}
+
+float scene_radius(const Scene& scene) {
+    const Bounds3 b = scene.bounds();
+    return b.empty() ? 1.0f : std::max(0.5f * length(b.diagonal()), 1e-3f);
+}
+
+// Scenes exported without lights would render black: light them like a product shot,
+// a key light from the upper right of the camera and a dimmer fill from the left.
+void add_default_lights(Scene& scene, const CameraDesc& cam) {
+    const float radius = scene_radius(scene);
+    const Transform& xf = cam.to_world;
+    const Vec3 key = normalize(xf.vector(Vec3(-0.5f, -0.7f, -1.0f)));
+    const Vec3 fill = normalize(xf.vector(Vec3(0.8f, -0.2f, -1.0f)));
+    scene.lights.push_back(std::make_unique<DirectionalLight>(key, Spectrum(2.5f), radius));
+    scene.lights.push_back(std::make_unique<DirectionalLight>(fill, Spectrum(0.6f), radius));
+}
+
+// Environment images and colours are taken as linear Rec.709, like glTF's colours.
+std::unique_ptr<EnvironmentLight> make_environment(const RenderCommandOptions& o,
+                                                   const Scene& scene,
+                                                   const Mat3& rec709_to_working) {
+    if (!o.env.empty()) {
+        Image img = read_image(o.env, ImageEncoding::Linear);
+        convert_image_colors(img, rec709_to_working);
+        return std::make_unique<EnvironmentLight>(std::move(img), o.env_intensity,
+                                                  o.env_rotation, scene_radius(scene));
+    }
+    if (o.env_color.size() == 3)
+        return std::make_unique<EnvironmentLight>(
+            rec709_to_working * Spectrum(o.env_color[0], o.env_color[1], o.env_color[2]) *
+                o.env_intensity,
+            scene_radius(scene));
+    return nullptr;
+}
+
+bool has_emission(const Scene& scene) {
+    for (const MaterialDesc& m : scene.materials)
+        if (m.is_emissive()) return true;
+    return false;
+}
+
+// Command-line depth of field settings override the file's; focusing on a pixel needs
+// the accelerator, so this runs after it is built.
+void apply_lens_options(const RenderCommandOptions& o, const std::string& path, int width,
+                        int height, const Accel& accel, CameraDesc& cam) {
+    if (o.aperture_blades >= 0) cam.aperture_blades = o.aperture_blades;
+    if (o.aperture_radius > 0) cam.aperture_radius = o.aperture_radius;
+    if (o.fstop > 0) cam.aperture_radius = aperture_radius_from_fstop(o.fstop, cam.yfov,
+                                                                      cam.sensor_height_mm);
+    if (o.focus_distance > 0) cam.focus_distance = o.focus_distance;
+    if (o.focus_on.size() == 2) {
+        const std::optional<float> d =
+            focus_distance_at(cam, width, height, o.focus_on[0], o.focus_on[1], accel);
+        if (!d)
+            throw SceneError(path + ": --focus-on " + std::to_string(o.focus_on[0]) + " " +
+                             std::to_string(o.focus_on[1]) + ": no surface behind that pixel");
+        cam.focus_distance = *d;
+        LOG_INFO(path << ": focus distance " << *d << " (surface at pixel " << o.focus_on[0]
+                      << " " << o.focus_on[1] << ")");
+    }
+    if (cam.aperture_radius > 0 && !(cam.focus_distance > 0))
+        throw SceneError(path + ": depth of field needs a focus distance (--focus-distance "
+                                "or --focus-on)");
+    if (cam.aperture_radius > 0 && cam.type == ProjectionType::Orthographic)
+        throw SceneError(path + ": depth of field needs a perspective camera");
+}
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+}  // namespace
+
+RenderContext SceneSetup::context() const {
+    return RenderContext{scene, *accel, *lights, scene_has_alpha(scene), materials};
+}
+
+std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std::string& path) {
+    auto s = std::make_unique<SceneSetup>();
+    s->path = path;
+    s->color = std::make_unique<ColorPipeline>(o.color);
+    auto t0 = Clock::now();
+    GltfLoadOptions load;
+    load.rec709_to_working = s->color->rec709_to_working();
+    s->scene = load_gltf(path, load);
+    s->load_seconds = since(t0);
+    Scene& scene = s->scene;
+
+    // Image size: what the user asked, completed from the camera's aspect ratio.
+    const CameraDesc* file_cam = nullptr;
+    if (!o.camera.empty())
+        file_cam = find_camera(scene, o.camera);
+    else if (!scene.cameras.empty())
+        file_cam = &scene.cameras[0];
+    float aspect = file_cam && file_cam->aspect_ratio > 0 ? file_cam->aspect_ratio
+                   : file_cam && file_cam->type == ProjectionType::Orthographic
+                       ? file_cam->xmag / file_cam->ymag
+                       : 4.0f / 3.0f;
+    if (o.width && o.height) aspect = float(o.width) / float(o.height);
+    s->width = o.width ? o.width
+                       : (o.height ? std::max(1, int(std::lround(o.height * aspect))) : 640);
+    s->height = o.height ? o.height : std::max(1, int(std::lround(s->width / aspect)));
+    s->camera_desc = file_cam ? *file_cam : default_camera(scene.bounds(), aspect);
+    if (!file_cam) LOG_INFO(path << ": no camera in the file; using one that frames the scene");
+    std::unique_ptr<EnvironmentLight> env =
+        make_environment(o, scene, s->color->rec709_to_working());
+    if (scene.lights.empty() && !has_emission(scene) && !env && o.default_light) {
+        LOG_INFO(path << ": no lights in the file; adding a key light and a dim environment "
+                         "(--no-default-light to disable)");
+        add_default_lights(scene, s->camera_desc);
+        env = std::make_unique<EnvironmentLight>(Spectrum(0.3f), scene_radius(scene));
+    }
+    s->lights = std::make_unique<LightSet>(scene, std::move(env));
+
+    t0 = Clock::now();
+    s->accel = make_accel(parse_accel_type(o.accel), scene);
+    s->build_seconds = since(t0);
+
+    apply_lens_options(o, path, s->width, s->height, *s->accel, s->camera_desc);
+
+    IntegratorOptions iopt;
+    iopt.max_depth = o.max_depth;
+    iopt.strategy = parse_light_strategy(o.strategy);
+    iopt.light_samples = o.light_samples;
+    iopt.bsdf_samples = o.bsdf_samples;
+    s->integrator = make_integrator(o.integrator, iopt);
+    s->camera = make_camera(s->camera_desc, s->width, s->height);
+    s->materials.gltf_distribution =
+        o.microfacet == "beckmann" ? MicrofacetType::Beckmann : MicrofacetType::Ggx;
+    return s;
+}
+
+RenderOptions render_options_for(const RenderCommandOptions& o, const std::string& label) {
+    RenderOptions r;
+    r.spp = o.spp;
+    r.seed = o.seed;
+    r.threads = o.threads;
+    r.sampler = parse_sampler_type(o.sampler);
+    r.filter = o.filter;
+    r.progress = !o.quiet;
+    r.label = label;
+    r.time = o.time;
+    r.time_limit = o.time_limit;
+    r.aovs = parse_aovs(o.aovs);
+    return r;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,51 @@
+// Everything one image needs before the render loop: the scene loaded, its camera and
+// image size resolved, default lights added, the accelerator, integrator and camera
+// built. Shared by `render` and `converge`, with the command-line options that drive it.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "apps/penumbra/render_command.h"
+#include "core/accel/accel.h"
+#include "core/camera/camera.h"
+#include "core/lights/light_set.h"
+#include "core/scene/scene.h"
+#include "integrators/render.h"
+#include "io/color.h"
+
+namespace penumbra {
+
+// The options that decide what an image looks like (size, samples, camera, integrator,
+// sampler, lights, lens), for `render`, `converge` and converge's --config strings.
+void add_image_options(CLI::App* cmd, RenderCommandOptions& o);
+
+struct SceneSetup {
+    std::string path;
+    Scene scene;
+    CameraDesc camera_desc;  // after lens overrides
+    int width = 0, height = 0;
+    std::unique_ptr<LightSet> lights;
+    std::unique_ptr<Accel> accel;
+    std::unique_ptr<Integrator> integrator;
+    std::unique_ptr<Camera> camera;
+    MaterialOptions materials;
+    // The colour pipeline (--ocio-config, --working-space, ...): the scene's colours
+    // were converted into its working space at load; outputs go through it.
+    std::unique_ptr<ColorPipeline> color;
+    double load_seconds = 0, build_seconds = 0;
+
+    // Refers to this setup: keep it alive (and in place) while rendering.
+    RenderContext context() const;
+};
+
+// Loads and prepares path as the options say. Throws SceneError for bad input. The
+// result refers to itself, hence the pointer.
+std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std::string& path);
+
+// The render-loop options (samples, seed, sampler, filter, time, limits) from o.
+RenderOptions render_options_for(const RenderCommandOptions& o, const std::string& label);
+
+}  // namespace penumbra

@@ -1,0 +1,132 @@
+// Accelerator benchmarks: closest-hit throughput on incoherent rays (Embree against our
+// BVH with each split and the grid, one thread) and build time of a 1M-triangle mesh on
+// one core. Figures and commands: docs/performance.md.
+#include <benchmark/benchmark.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <map>
+#include <memory>
+
+#include "core/accel/accel.h"
+#include "core/sampling/rng.h"
+#include "core/sampling/warp.h"
+#include "io/gltf_loader.h"
+
+namespace penumbra {
+namespace {
+
+// A closed UV sphere of 2 * slices * (stacks - 1) triangles, as a one-instance scene.
+Scene sphere_scene(int slices, int stacks) {
+    Scene scene;
+    TriangleMesh m;
+    m.positions.push_back({0, 1, 0});
+    for (int i = 1; i < stacks; ++i)
+        for (int j = 0; j < slices; ++j) {
+            const float theta = kPi * i / stacks, phi = 2 * kPi * j / slices;
+            m.positions.push_back({std::sin(theta) * std::cos(phi), std::cos(theta),
+                                   std::sin(theta) * std::sin(phi)});
+        }
+    m.positions.push_back({0, -1, 0});
+    const uint32_t south = static_cast<uint32_t>(m.positions.size() - 1);
+    auto ring = [&](int i, int j) { return uint32_t(1 + (i - 1) * slices + (j % slices)); };
+    for (int j = 0; j < slices; ++j) {
+        m.indices.insert(m.indices.end(), {0u, ring(1, j + 1), ring(1, j)});
+        m.indices.insert(m.indices.end(), {south, ring(stacks - 1, j), ring(stacks - 1, j + 1)});
+    }
+    for (int i = 1; i < stacks - 1; ++i)
+        for (int j = 0; j < slices; ++j)
+            m.indices.insert(m.indices.end(), {ring(i, j), ring(i, j + 1), ring(i + 1, j + 1),
+                                               ring(i, j), ring(i + 1, j + 1), ring(i + 1, j)});
+    for (const Vec3& p : m.positions) m.bounds.expand(p);
+    scene.meshes.push_back(std::move(m));
+    scene.objects.push_back({"sphere", {0}, scene.meshes[0].bounds});
+    Instance inst;
+    scene.instances.push_back(inst);
+    return scene;
+}
+
+// 100k small random triangles filling a unit cube: deep, incoherent, no large faces.
+Scene soup_scene() {
+    Scene scene;
+    TriangleMesh m;
+    Rng rng(12);
+    for (int i = 0; i < 100000; ++i) {
+        const Vec3 c(rng.next_float(), rng.next_float(), rng.next_float());
+        for (int k = 0; k < 3; ++k) {
+            m.positions.push_back(c + 0.02f * Vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f,
+                                                   rng.next_float() - 0.5f));
+            m.indices.push_back(static_cast<uint32_t>(m.positions.size() - 1));
+        }
+    }
+    for (const Vec3& p : m.positions) m.bounds.expand(p);
+    scene.meshes.push_back(std::move(m));
+    scene.objects.push_back({"soup", {0}, scene.meshes[0].bounds});
+    scene.instances.push_back(Instance());
+    return scene;
+}
+
+enum class Which { Cornell, Sphere1M, Soup };
+
+const Scene& scene_for(Which w) {
+    static std::map<Which, Scene> scenes;
+    auto it = scenes.find(w);
+    if (it != scenes.end()) return it->second;
+    Scene s = w == Which::Cornell ? load_gltf(PENUMBRA_SOURCE_DIR "/scenes/cornell-box.gltf")
+              : w == Which::Soup  ? soup_scene()
+                                  : sphere_scene(1000, 501);  // 1,000,000 triangles
+    return scenes.emplace(w, std::move(s)).first->second;
+}
+
+// Incoherent rays: origins uniform in the scene's bounds, directions uniform.
+void BM_Incoherent(benchmark::State& state, Which which, AccelType type) {
+    const Scene& scene = scene_for(which);
+    const std::unique_ptr<Accel> accel = make_accel(type, scene);
+    const Bounds3 b = scene.bounds();
+    Rng rng(4);
+    std::vector<Ray> rays(1 << 20);
+    for (Ray& r : rays) {
+        r.o = b.lo + b.diagonal() * Vec3(rng.next_float(), rng.next_float(), rng.next_float());
+        r.d = square_to_uniform_sphere({rng.next_float(), rng.next_float()});
+    }
+    size_t i = 0, hits = 0;
+    for (auto _ : state) {
+        hits += accel->intersect(rays[i]).has_value();
+        i = (i + 1) & (rays.size() - 1);
+    }
+    benchmark::DoNotOptimize(hits);
+    state.SetItemsProcessed(state.iterations());
+}
+
+#define ACCEL_BENCH(scene, type, label) \
+    BENCHMARK_CAPTURE(BM_Incoherent, label, Which::scene, AccelType::type)
+ACCEL_BENCH(Cornell, Embree, cornell_embree);
+ACCEL_BENCH(Cornell, BvhSah, cornell_bvh_sah);
+ACCEL_BENCH(Cornell, BvhMedian, cornell_bvh_median);
+ACCEL_BENCH(Cornell, BvhCenter, cornell_bvh_center);
+ACCEL_BENCH(Cornell, Grid, cornell_grid);
+ACCEL_BENCH(Soup, Embree, soup100k_embree);
+ACCEL_BENCH(Soup, BvhSah, soup100k_bvh_sah);
+ACCEL_BENCH(Soup, BvhMedian, soup100k_bvh_median);
+ACCEL_BENCH(Soup, BvhCenter, soup100k_bvh_center);
+ACCEL_BENCH(Soup, Grid, soup100k_grid);
+ACCEL_BENCH(Sphere1M, Embree, sphere1m_embree);
+ACCEL_BENCH(Sphere1M, BvhSah, sphere1m_bvh_sah);
+ACCEL_BENCH(Sphere1M, Grid, sphere1m_grid);
+
+// Build of the 1M-triangle sphere on one core (TBB limited to one thread, which also
+// holds Embree to one thread).
+void BM_Build1M(benchmark::State& state, AccelType type) {
+    const Scene& scene = scene_for(Which::Sphere1M);
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    for (auto _ : state) benchmark::DoNotOptimize(make_accel(type, scene));
+    state.SetItemsProcessed(state.iterations() * scene.triangle_count());
+}
+BENCHMARK_CAPTURE(BM_Build1M, embree, AccelType::Embree)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Build1M, bvh_sah, AccelType::BvhSah)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Build1M, bvh_median, AccelType::BvhMedian)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Build1M, bvh_center, AccelType::BvhCenter)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Build1M, grid, AccelType::Grid)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace penumbra

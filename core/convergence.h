@@ -1,0 +1,40 @@
+// How far an image is from a reference and how that error falls with samples and time:
+// MSE and relative MSE, the least-squares slope of log(error) against log(spp) (about -1
+// for Monte Carlo), and the time to reach a target error.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "core/image.h"
+
+namespace penumbra {
+
+// The relMSE epsilon: keeps black reference pixels from dominating. 1e-2, as in
+// Rousselle et al. 2011 and most denoising papers that report relMSE.
+inline constexpr double kRelMseEpsilon = 1e-2;
+
+// Mean over pixels and the R, G, B channels of (x - r)^2. Sizes must match (CHECK).
+double mean_squared_error(const Image& image, const Image& reference);
+// Mean of (x - r)^2 / (r^2 + epsilon) over pixels and R, G, B.
+double relative_mse(const Image& image, const Image& reference,
+                    double epsilon = kRelMseEpsilon);
+
+// Least-squares slope of log(y) against log(x); needs two distinct positive x and
+// positive y (points with y <= 0 are ignored). std::nullopt when undetermined.
+std::optional<double> log_log_slope(const std::vector<double>& x, const std::vector<double>& y);
+
+struct TimeToError {
+    double seconds = 0;
+    bool extrapolated = false;  // beyond the measured points, along the fitted power law
+};
+
+// When the error first reaches `target`, from measured (time, error) points in time
+// order: the first point's time if it is already there, else linear interpolation in
+// log-log between the point before and the first point at or below the target. Not
+// reached: extrapolated along the least-squares power law through all points.
+// std::nullopt when that does not fall (or there are no points).
+std::optional<TimeToError> time_to_error(const std::vector<double>& seconds,
+                                         const std::vector<double>& error, double target);
+
+}  // namespace penumbra

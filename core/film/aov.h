@@ -1,0 +1,59 @@
+// Arbitrary output variables (AOVs): per-pixel images besides the beauty. The first-hit
+// ones (albedo, normal, depth, position) describe what the camera ray hit; variance and
+// samples describe the beauty estimate itself.
+#pragma once
+
+#include <cstdint>
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+#include "core/math/vec.h"
+
+namespace penumbra {
+
+enum class Aov : uint32_t {
+    Albedo = 1,     // base colour at the first hit (working space)
+    Normal = 2,     // world shading normal at the first hit, facing the camera
+    Depth = 4,      // distance from the camera ray's origin to the first hit
+    Position = 8,   // world position of the first hit
+    Variance = 16,  // variance of the pixel's beauty estimate (of the mean), per channel
+    Samples = 32,   // camera samples taken in the pixel
+};
+
+class AovSet {
+public:
+    AovSet() = default;
+    AovSet(std::initializer_list<Aov> aovs) {
+        for (Aov a : aovs) add(a);
+    }
+    void add(Aov a) { m_bits |= uint32_t(a); }
+    bool has(Aov a) const { return (m_bits & uint32_t(a)) != 0; }
+    bool any() const { return m_bits != 0; }
+    // Albedo, normal, depth or position: the render loop must find the first hit.
+    bool needs_first_hit() const {
+        return (m_bits & (uint32_t(Aov::Albedo) | uint32_t(Aov::Normal) | uint32_t(Aov::Depth) |
+                          uint32_t(Aov::Position))) != 0;
+    }
+
+private:
+    uint32_t m_bits = 0;
+};
+
+// "albedo,normal,depth,position,variance,samples" (any subset, any order; "all" for
+// every one). Throws std::invalid_argument naming an unknown entry.
+AovSet parse_aovs(const std::string& list);
+// The names parse_aovs accepts, in Aov order.
+const std::vector<std::string>& aov_names();
+
+// What one camera sample saw first. Misses leave hit false; the film then counts them
+// as zero albedo and normal and leaves them out of depth and position.
+struct AovRecord {
+    bool hit = false;
+    Spectrum albedo;
+    Vec3 normal;
+    Vec3 position;
+    float depth = 0;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,197 @@
+#include "io/job_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/error.h"
+
+namespace penumbra {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// Reads one entry's keys into settings; `where` prefixes every message.
+class SettingsReader {
+public:
+    SettingsReader(const json& object, std::string where, const fs::path& base)
+        : m_object(object), m_where(std::move(where)), m_base(base) {}
+
+    void read(JobSettings& s) const {
+        static const char* const kKeys[] = {
+            "scene",  "camera", "integrator", "strategy", "sampler", "filter",  "accel",
+            "output", "out_dir", "name",      "frames",   "width",   "height",  "max_depth",
+            "frame",  "spp",    "seed",       "time",     "time_limit", "fps"};
+        for (const auto& [key, value] : m_object.items()) {
+            bool known = false;
+            for (const char* k : kKeys) known = known || key == k;
+            if (!known) {
+                std::string list;
+                for (const char* k : kKeys) list += (list.empty() ? "" : ", ") + std::string(k);
+                fail(key, "unknown key (expected one of: " + list + ")");
+            }
+        }
+        text("camera", s.camera);
+        text("integrator", s.integrator);
+        text("strategy", s.strategy);
+        text("sampler", s.sampler);
+        text("filter", s.filter);
+        text("accel", s.accel);
+        path("output", s.output);
+        path("out_dir", s.out_dir);
+        text("name", s.name);
+        text("frames", s.frames);
+        if (s.frames) try {
+                parse_frame_list(*s.frames);
+            } catch (const std::invalid_argument& e) {
+                fail("frames", e.what());
+            }
+        integer("width", s.width, 1, 1 << 15);
+        integer("height", s.height, 1, 1 << 15);
+        integer("max_depth", s.max_depth, 0, 1024);
+        integer("frame", s.frame, 0, 1 << 30);
+        std::optional<int> spp;
+        integer("spp", spp, 1, 1 << 24);
+        if (spp) s.spp = static_cast<uint32_t>(*spp);
+        if (m_object.contains("seed")) {
+            const json& v = m_object["seed"];
+            if (!v.is_number_unsigned()) fail("seed", "expected a non-negative integer");
+            s.seed = v.get<uint64_t>();
+        }
+        number("time", s.time, false);
+        number("time_limit", s.time_limit, true);
+        number("fps", s.fps, true);
+    }
+
+    [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+        throw SceneError(m_where + "." + key + ": " + what);
+    }
+
+private:
+    void text(const char* key, std::optional<std::string>& out) const {
+        if (!m_object.contains(key)) return;
+        const json& v = m_object[key];
+        if (!v.is_string() || v.get<std::string>().empty())
+            fail(key, "expected a non-empty string");
+        out = v.get<std::string>();
+    }
+    void path(const char* key, std::optional<std::string>& out) const {
+        text(key, out);
+        if (out && fs::path(*out).is_relative()) out = (m_base / *out).lexically_normal().string();
+    }
+    void integer(const char* key, std::optional<int>& out, int lo, int hi) const {
+        if (!m_object.contains(key)) return;
+        const json& v = m_object[key];
+        if (!v.is_number_integer() || v.get<int64_t>() < lo || v.get<int64_t>() > hi)
+            fail(key, "expected an integer in [" + std::to_string(lo) + ", " +
+                          std::to_string(hi) + "]");
+        out = static_cast<int>(v.get<int64_t>());
+    }
+    void number(const char* key, std::optional<double>& out, bool positive) const {
+        if (!m_object.contains(key)) return;
+        const json& v = m_object[key];
+        if (!v.is_number() || !std::isfinite(v.get<double>()) ||
+            (positive && !(v.get<double>() > 0)))
+            fail(key, positive ? "expected a positive number" : "expected a finite number");
+        out = v.get<double>();
+    }
+
+    const json& m_object;
+    std::string m_where;
+    fs::path m_base;
+};
+
+}  // namespace
+
+JobFile parse_job_file(const std::string& text, const std::string& path) {
+    json root;
+    try {
+        root = json::parse(text);
+    } catch (const json::parse_error& e) {
+        throw SceneError(path + ": not valid JSON: " + e.what());
+    }
+    if (!root.is_object()) throw SceneError(path + ": expected a JSON object");
+    for (const auto& [key, value] : root.items())
+        if (key != "defaults" && key != "jobs")
+            throw SceneError(path + ": unknown key '" + key + "' (expected defaults, jobs)");
+    const fs::path base = fs::path(path).parent_path();
+    JobFile file;
+    if (root.contains("defaults")) {
+        const json& d = root["defaults"];
+        if (!d.is_object()) throw SceneError(path + ": defaults: expected an object");
+        SettingsReader reader(d, path + ": defaults", base);
+        if (d.contains("scene")) reader.fail("scene", "belongs in a jobs[] entry");
+        reader.read(file.defaults);
+    }
+    if (!root.contains("jobs") || !root["jobs"].is_array() || root["jobs"].empty())
+        throw SceneError(path + ": jobs: expected a non-empty array of {\"scene\": ...}");
+    const json& jobs = root["jobs"];
+    for (size_t i = 0; i < jobs.size(); ++i) {
+        JobEntry entry;
+        entry.where = path + ": jobs[" + std::to_string(i) + "]";
+        if (!jobs[i].is_object()) throw SceneError(entry.where + ": expected an object");
+        const SettingsReader reader(jobs[i], entry.where, base);
+        std::optional<std::string> scene;
+        if (jobs[i].contains("scene") && jobs[i]["scene"].is_string())
+            scene = jobs[i]["scene"].get<std::string>();
+        if (!scene || scene->empty()) reader.fail("scene", "expected the scene file's path");
+        entry.scene = fs::path(*scene).is_relative()
+                          ? (base / *scene).lexically_normal().string()
+                          : *scene;
+        reader.read(entry.settings);
+        file.jobs.push_back(std::move(entry));
+    }
+    return file;
+}
+
+JobFile read_job_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw SceneError(path + ": cannot open the job file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_job_file(text.str(), path);
+}
+
+std::vector<int> parse_frame_list(const std::string& spec) {
+    // A frame list longer than this is almost certainly a typo ("1-100000").
+    constexpr size_t kMaxFrames = 100000;
+    auto bad = [&](const std::string& why) {
+        return std::invalid_argument("frames '" + spec + "': " + why +
+                                     " (expected e.g. 12, 1-48, 1-48:2 or 1,5,10-12)");
+    };
+    auto number = [&](const std::string& t) {
+        if (t.empty() || t.find_first_not_of("0123456789") != std::string::npos || t.size() > 9)
+            throw bad("'" + t + "' is not a frame number");
+        return std::stoi(t);
+    };
+    std::vector<int> frames;
+    std::stringstream items(spec);
+    std::string item;
+    while (std::getline(items, item, ',')) {
+        std::string range = item;
+        int step = 1;
+        if (const size_t colon = item.find(':'); colon != std::string::npos) {
+            range = item.substr(0, colon);
+            step = number(item.substr(colon + 1));
+            if (step < 1) throw bad("the step must be at least 1");
+        }
+        const size_t dash = range.find('-');
+        const int first = number(range.substr(0, dash));
+        const int last = dash == std::string::npos ? first : number(range.substr(dash + 1));
+        if (last < first) throw bad(std::to_string(last) + " comes before " + std::to_string(first));
+        for (int f = first; f <= last; f += step) {
+            frames.push_back(f);
+            if (frames.size() > kMaxFrames) throw bad("more than 100000 frames");
+        }
+    }
+    if (frames.empty()) throw bad("no frames");
+    return frames;
+}
+
+}  // namespace penumbra

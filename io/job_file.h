@@ -1,0 +1,45 @@
+// Batch job files: JSON with global defaults and one entry per scene that overrides
+// them, validated like scene files (errors name the file and the element). Also the
+// frame-list syntax shared by --frames and the job file's "frames".
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace penumbra {
+
+// Settings a job file may give, globally ("defaults") or per entry. Unset: inherit.
+// Relative paths (scene, output, out_dir) are resolved against the job file's folder.
+struct JobSettings {
+    std::optional<std::string> camera, integrator, strategy, sampler, filter, accel;
+    std::optional<std::string> output, out_dir, name, frames;
+    std::optional<int> width, height, max_depth, frame;
+    std::optional<uint32_t> spp;
+    std::optional<uint64_t> seed;
+    std::optional<double> time, time_limit, fps;
+};
+
+struct JobEntry {
+    std::string scene;
+    JobSettings settings;
+    std::string where;  // "jobs.json: jobs[2]", for messages
+};
+
+struct JobFile {
+    JobSettings defaults;
+    std::vector<JobEntry> jobs;
+};
+
+// Throws SceneError naming the file and element for bad JSON, unknown keys, wrong types
+// or out-of-range values.
+JobFile read_job_file(const std::string& path);
+// As read_job_file, from text; `path` names it in messages and anchors relative paths.
+JobFile parse_job_file(const std::string& text, const std::string& path);
+
+// "12", "1-48", "1-48:4" (every 4th), or a comma-separated list of those, in order.
+// Throws std::invalid_argument with the reason.
+std::vector<int> parse_frame_list(const std::string& spec);
+
+}  // namespace penumbra

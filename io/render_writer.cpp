@@ -1,0 +1,128 @@
+#include "io/render_writer.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <memory>
+
+#include "core/camera/camera_matrices.h"
+#include "core/convergence.h"
+#include "core/error.h"
+
+namespace penumbra {
+
+namespace {
+
+struct AovLayout {
+    Aov aov;
+    const char* layer;
+    std::vector<std::string> channels;
+    bool colour;      // converted to the output space
+    bool full_float;  // precision or range beyond half's
+};
+
+const std::vector<AovLayout>& aov_layouts() {
+    static const std::vector<AovLayout> list = {
+        {Aov::Albedo, "Albedo", {"R", "G", "B"}, true, false},
+        {Aov::Normal, "Normal", {"X", "Y", "Z"}, false, false},
+        // Blender names its depth pass "Depth" with channel Z.
+        {Aov::Depth, "Depth", {"Z"}, false, true},
+        {Aov::Position, "Position", {"X", "Y", "Z"}, false, true},
+        {Aov::Variance, "Variance", {"R", "G", "B"}, false, false},
+        // Half holds integers exactly only up to 2048.
+        {Aov::Samples, "Samples", {"X"}, false, true},
+    };
+    return list;
+}
+
+}  // namespace
+
+AovLayers aov_layers(const Film& film, const ColorPipeline& color) {
+    AovLayers out;
+    out.images.reserve(aov_layouts().size());  // layers point into images
+    for (const AovLayout& l : aov_layouts()) {
+        if (!film.aovs().has(l.aov)) continue;
+        out.images.push_back(film.resolve_aov(l.aov));
+        if (l.colour) color.to_output(out.images.back());
+        out.layers.push_back({l.layer, l.channels, &out.images.back(), l.full_float});
+    }
+    return out;
+}
+
+Metadata color_metadata(const ColorPipeline& color) {
+    // OIIO keeps "oiio:" attributes out of files (its EXR reader always reports
+    // "Linear"), so the space's name travels in our own key.
+    Metadata m = {
+        {"penumbra:colorspace", color.output_space()},
+        {"penumbra:working_space", color.working_space()},
+        {"penumbra:ocio_config", color.config_source()},
+    };
+    if (color.output_chromaticities())
+        m.push_back({"chromaticities", *color.output_chromaticities()});
+    return m;
+}
+
+Metadata camera_metadata(const CameraDesc& camera, int width, int height) {
+    return {
+        {"penumbra:camera", camera.name},
+        {"worldtocamera", world_to_camera_lh(camera)},
+        {"worldtoNDC", world_to_ndc(camera, width, height)},
+    };
+}
+
+Image read_beauty(const std::string& path) {
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+    if (!in) {
+        throw SceneError(path + ": cannot read the reference: " + OIIO::geterror());
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    std::vector<int> index;
+    for (const char* name : {"R", "G", "B", "A"}) {
+        const int i = spec.channelindex(name);
+        if (i < 0 && name[0] != 'A')
+            throw SceneError(path + ": the reference has no channel " + name);
+        if (i >= 0) index.push_back(i);
+    }
+    std::vector<float> all(size_t(spec.width) * spec.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data()))
+        throw SceneError(path + ": cannot read the reference: " + in->geterror());
+    Image img(spec.width, spec.height, int(index.size()));
+    for (size_t p = 0; p < size_t(spec.width) * spec.height; ++p)
+        for (size_t c = 0; c < index.size(); ++c)
+            img.pixels[p * index.size() + c] = all[p * spec.nchannels + size_t(index[c])];
+    return img;
+}
+
+RenderFilesResult write_render(const RenderFiles& files, const Film& film,
+                               const ColorPipeline& color, const CameraDesc& camera,
+                               Metadata metadata) {
+    const Image working = film.resolve();
+    Image beauty = working;
+    color.to_output(beauty);
+
+    RenderFilesResult result;
+    if (!files.reference.empty()) {
+        const Image ref = read_beauty(files.reference);
+        if (ref.width != beauty.width || ref.height != beauty.height)
+            throw SceneError(files.reference + ": the reference is " + std::to_string(ref.width) +
+                             "x" + std::to_string(ref.height) + ", the render " +
+                             std::to_string(beauty.width) + "x" + std::to_string(beauty.height));
+        result.mse = mean_squared_error(beauty, ref);
+        result.relmse = relative_mse(beauty, ref);
+        metadata.push_back({"penumbra:reference", files.reference});
+        metadata.push_back({"penumbra:mse", *result.mse});
+        metadata.push_back({"penumbra:relmse", *result.relmse});
+        metadata.push_back({"penumbra:relmse_epsilon", kRelMseEpsilon});
+    }
+    for (auto& entry : color_metadata(color)) metadata.push_back(std::move(entry));
+    for (auto& entry : camera_metadata(camera, beauty.width, beauty.height))
+        metadata.push_back(std::move(entry));
+
+    const AovLayers aovs = aov_layers(film, color);
+    std::vector<ExrLayer> layers = {{"", {"R", "G", "B", "A"}, &beauty, false}};
+    layers.insert(layers.end(), aovs.layers.begin(), aovs.layers.end());
+    write_exr(files.exr, layers, metadata, files.exr_options);
+    if (!files.preview.empty()) write_preview(files.preview, working, color, files.exposure);
+    return result;
+}
+
+}  // namespace penumbra

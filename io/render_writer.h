@@ -1,0 +1,58 @@
+// The files of a finished render: one EXR (the beauty in the output colour space, AOV
+// layers, and a header that describes the render: colour space and chromaticities,
+// camera matrices, error against a reference) and the display-referred preview.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/film/film.h"
+#include "core/scene/scene.h"
+#include "io/color.h"
+#include "io/image_writer.h"
+
+namespace penumbra {
+
+struct RenderFiles {
+    std::string exr;      // the EXR's path
+    std::string preview;  // the PNG/JPEG's path; empty: none
+    float exposure = 0;   // preview only, in stops
+    ExrOptions exr_options;
+    std::string reference;  // EXR to compare with (same size, output colour space); empty: none
+};
+
+struct RenderFilesResult {
+    std::optional<double> mse, relmse;  // against RenderFiles::reference
+};
+
+// Writes the EXR and the preview of film (rendered in color's working space) and
+// returns the error against the reference. metadata is the caller's (scene, integrator,
+// spp, ...); color_metadata, camera_metadata and the reference's error are added.
+// Throws SceneError for a reference that cannot be read or does not match in size.
+RenderFilesResult write_render(const RenderFiles& files, const Film& film,
+                               const ColorPipeline& color, const CameraDesc& camera,
+                               Metadata metadata);
+
+// The EXR layers of film's AOVs, named as Blender's compositor and Nuke expect a
+// "pass.channel" pair: Albedo.{R,G,B}, Normal.{X,Y,Z}, Depth.Z, Position.{X,Y,Z},
+// Variance.{R,G,B}, Samples.X. Albedo is converted to the output space (a colour);
+// variance stays in the working space (a matrix does not map variances of correlated
+// channels). Depth, position and samples stay 32-bit under --half.
+struct AovLayers {
+    std::vector<Image> images;  // owned; layers point into it
+    std::vector<ExrLayer> layers;
+};
+AovLayers aov_layers(const Film& film, const ColorPipeline& color);
+
+// "penumbra:colorspace" (the output space's name), "chromaticities" when known,
+// "penumbra:working_space" and "penumbra:ocio_config".
+Metadata color_metadata(const ColorPipeline& color);
+// "penumbra:camera", "worldtocamera" and "worldtoNDC" (OpenEXR's worldToCamera and
+// worldToNDC), for a width x height image.
+Metadata camera_metadata(const CameraDesc& camera, int width, int height);
+// The beauty channels (R, G, B and A if present, found by name) of an EXR, for a
+// reference. Throws SceneError when it cannot be read or has no R, G, B.
+Image read_beauty(const std::string& path);
+
+}  // namespace penumbra

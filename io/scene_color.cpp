@@ -1,0 +1,37 @@
+#include "io/scene_color.h"
+
+#include <set>
+
+namespace penumbra {
+
+void convert_image_colors(Image& img, const Mat3& m) {
+    if (m.is_identity() || img.channels < 3) return;
+    for (size_t i = 0; i < img.pixels.size(); i += size_t(img.channels)) {
+        const Vec3 c = m * Vec3(img.pixels[i], img.pixels[i + 1], img.pixels[i + 2]);
+        img.pixels[i] = c.x;
+        img.pixels[i + 1] = c.y;
+        img.pixels[i + 2] = c.z;
+    }
+}
+
+void convert_scene_colors(Scene& scene, const Mat3& m) {
+    if (m.is_identity()) return;
+    std::set<uint32_t> colour_images;
+    auto note = [&](const TextureRef& r) {
+        if (r.valid()) colour_images.insert(scene.textures[size_t(r.texture)].image);
+    };
+    for (MaterialDesc& mat : scene.materials) {
+        mat.base_color = Vec4(m * mat.base_color.xyz(), mat.base_color.w);
+        mat.emissive = m * mat.emissive;
+        mat.specular_color = m * mat.specular_color;
+        note(mat.base_color_texture);
+        note(mat.emissive_texture);
+    }
+    // The loader decodes an image once per encoding, so an image that a colour texture
+    // uses holds colour only, even if a data texture shares the file.
+    for (uint32_t index : colour_images) convert_image_colors(scene.images[index], m);
+    for (TriangleMesh& mesh : scene.meshes)
+        for (Vec4& c : mesh.colors) c = Vec4(m * c.xyz(), c.w);
+}
+
+}  // namespace penumbra

@@ -1,0 +1,119 @@
+#include "materials/dielectric.h"
+
+#include <cmath>
+
+#include "core/error.h"
+#include "materials/fresnel.h"
+
+namespace penumbra {
+
+namespace {
+
+float sqr(float x) { return x * x; }
+
+}  // namespace
+
+DielectricBsdf::DielectricBsdf(const DielectricParams& p)
+    // An index-matched interface (eta 1) passes light straight through: a Dirac lobe
+    // whatever the roughness (the refracted half vector degenerates).
+    : m_p(p), m_dist(p.distribution, p.alpha), m_delta(p.alpha < kDeltaAlpha || p.eta == 1) {
+    CHECK(p.masking != MaskingModel::VCavity, "the V-cavity masking has no transmission");
+    CHECK(p.eta > 0);
+}
+
+std::optional<DielectricBsdf::Pair> DielectricBsdf::pair(Vec3 wo, Vec3 wi) const {
+    if (wo.z == 0 || wi.z == 0) return std::nullopt;
+    Pair r;
+    r.reflection = wo.z * wi.z > 0;
+    r.etap = wo.z > 0 ? m_p.eta : 1 / m_p.eta;
+    // The generalized half vector, h ~ eta_o wo + eta_i wi (Walter et al. 2007, eq. 16),
+    // formed from the upper and lower direction so that swapping wo and wi gives the
+    // same float h.
+    Vec3 h = wo + wi;
+    if (!r.reflection) h = wo.z > 0 ? wo + wi * m_p.eta : wi + wo * m_p.eta;
+    if (!(length_squared(h) > 0)) return std::nullopt;
+    r.h = normalize(h);
+    if (r.h.z < 0) r.h = -r.h;
+    r.woh = dot(wo, r.h);
+    r.wih = dot(wi, r.h);
+    // Each direction must lie on its own side of the microfacet too.
+    if (r.woh * wo.z <= 0 || r.wih * wi.z <= 0) return std::nullopt;
+    // Fresnel where it is well conditioned: near the critical angle, F seen from the
+    // dense side has an infinite slope, so refraction takes the cosine on the less dense
+    // side (equal by Stokes' relations), reflection the symmetric mean of its two.
+    float cos_f = 0.5f * (r.woh + r.wih);
+    if (!r.reflection) cos_f = (m_p.eta >= 1) == (wo.z > 0) ? r.woh : r.wih;
+    r.F = fresnel_dielectric(cos_f, m_p.eta);
+    return r;
+}
+
+Spectrum DielectricBsdf::eval(Vec3 wo, Vec3 wi, Transport mode) const {
+    if (m_delta) return Spectrum(0);
+    const std::optional<Pair> q = pair(wo, wi);
+    if (!q) return Spectrum(0);
+    const float F = q->F;
+    const float dg = m_dist.D(q->h) * m_dist.G(wo, wi, q->h, m_p.masking);
+    const float cos_oi = std::abs(wo.z * wi.z);
+    if (q->reflection) return m_p.reflectance * (F * dg / (4 * cos_oi));
+    // Walter et al. 2007, eq. 21, in the form divided by eta_i^2 and times the Radiance
+    // factor 1 / etap^2 (so eta_o^2 in the numerator for radiance, as there).
+    const float denom = sqr(q->wih + q->woh / q->etap);
+    float ft = (1 - F) * dg * std::abs(q->wih * q->woh) / (cos_oi * denom);
+    if (mode == Transport::Radiance) ft /= sqr(q->etap);
+    return m_p.transmittance * ft;
+}
+
+float DielectricBsdf::pdf(Vec3 wo, Vec3 wi, Transport) const {
+    if (m_delta) return 0;
+    const std::optional<Pair> q = pair(wo, wi);
+    if (!q) return 0;
+    // Visible normals as seen from wo's side; reflection or refraction with probability
+    // F or 1 - F.
+    const float pdf_h = m_dist.pdf(wo.z > 0 ? wo : -wo, q->h, m_p.masking);
+    const float F = q->F;
+    if (q->reflection) return F * pdf_h / (4 * std::abs(q->woh));  // Walter eq. 14
+    // The Jacobian of the refracted half vector (Walter eq. 17, divided through by eta_i^2).
+    const float dh_dwi = std::abs(q->wih) / sqr(q->wih + q->woh / q->etap);
+    return (1 - F) * pdf_h * dh_dwi;
+}
+
+std::optional<BsdfSample> DielectricBsdf::sample_smooth(Vec3 wo, float u_lobe,
+                                                        Transport mode) const {
+    const float F = fresnel_dielectric(wo.z, m_p.eta);
+    if (u_lobe < F) {
+        const Vec3 wi(-wo.x, -wo.y, wo.z);
+        return BsdfSample{wi, m_p.reflectance * (F / std::abs(wi.z)), F, Lobe::Specular, 1};
+    }
+    const float etap = wo.z > 0 ? m_p.eta : 1 / m_p.eta;
+    const std::optional<Vec3> wi = refract(wo, Vec3(0, 0, wo.z > 0 ? 1.0f : -1.0f), etap);
+    if (!wi || wi->z == 0) return std::nullopt;
+    float ft = (1 - F) / std::abs(wi->z);
+    if (mode == Transport::Radiance) ft /= sqr(etap);
+    return BsdfSample{*wi, m_p.transmittance * ft, 1 - F, Lobe::Specular, etap};
+}
+
+std::optional<BsdfSample> DielectricBsdf::sample(Vec3 wo, float u_lobe, Vec2 u,
+                                                 Transport mode) const {
+    if (wo.z == 0) return std::nullopt;
+    if (m_delta) return sample_smooth(wo, u_lobe, mode);
+    const Vec3 wo_up = wo.z > 0 ? wo : -wo;
+    const Vec3 h = m_dist.sample(wo_up, u, m_p.masking);
+    const float woh = dot(wo, h);
+    if (woh * wo.z <= 0) return std::nullopt;
+    const float F = fresnel_dielectric(woh, m_p.eta);
+    std::optional<Vec3> wi;
+    float eta = 1;
+    if (u_lobe < F) {
+        wi = reflect(wo, h);
+        if (wi->z * wo.z <= 0) return std::nullopt;
+    } else {
+        eta = wo.z > 0 ? m_p.eta : 1 / m_p.eta;
+        wi = refract(wo, woh > 0 ? h : -h, eta);
+        if (!wi || wi->z * wo.z >= 0) return std::nullopt;
+    }
+    const float pdf_value = pdf(wo, *wi, mode);
+    if (!(pdf_value > 0)) return std::nullopt;
+    return BsdfSample{*wi, eval(wo, *wi, mode), pdf_value, Lobe::Glossy, eta};
+}
+
+}  // namespace penumbra

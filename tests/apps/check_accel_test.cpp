@@ -1,0 +1,52 @@
+// End-to-end tests of `penumbra check-accel`.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "support/paths.h"
+
+namespace penumbra {
+namespace {
+
+struct Result {
+    int status;
+    std::string output;
+};
+
+Result run_penumbra(const std::string& args) {
+    const std::string cmd = test::binary_path("bin/penumbra") + " " + args + " 2>&1";
+    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
+    std::string out;
+    std::array<char, 4096> buf;
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), pipe.get())) > 0) out.append(buf.data(), n);
+    const int raw = pclose(pipe.release());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+}
+
+TEST(CheckAccelCli, CornellBoxPassesAndReportsEveryAccelerator) {
+    const Result r = run_penumbra("check-accel " + test::source_path("scenes/cornell-box.gltf") +
+                                  " --rays 5000 --width 48 --images --spp 1");
+    ASSERT_EQ(r.status, 0) << r.output;
+    for (const char* name : {"embree", "bvh-sah", "bvh-median", "bvh-center", "grid"})
+        EXPECT_NE(r.output.find(name), std::string::npos) << name << "\n" << r.output;
+    EXPECT_NE(r.output.find("Mrays/s"), std::string::npos);
+    EXPECT_NE(r.output.find("edge/vertex"), std::string::npos);
+    EXPECT_NE(r.output.find("pixels differ"), std::string::npos);
+    EXPECT_NE(r.output.find("PASS"), std::string::npos);
+}
+
+TEST(CheckAccelCli, RejectsBadInput) {
+    EXPECT_NE(run_penumbra("check-accel /nonexistent.gltf").status, 0);
+    EXPECT_NE(run_penumbra("check-accel " + test::source_path("scenes/cornell-box.gltf") +
+                           " --threshold 2")
+                  .status,
+              0);
+}
+
+}  // namespace
+}  // namespace penumbra

@@ -1,0 +1,94 @@
+// Film AOVs: parsing the list, first-hit averages (misses count as zero for albedo and
+// normal, not at all for depth and position), sample counts and the variance of the mean.
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <stdexcept>
+
+#include "core/film/film.h"
+
+namespace penumbra {
+namespace {
+
+AovRecord hit(Spectrum albedo, Vec3 n, Vec3 p, float depth) {
+    AovRecord r;
+    r.hit = true;
+    r.albedo = albedo;
+    r.normal = n;
+    r.position = p;
+    r.depth = depth;
+    return r;
+}
+
+TEST(FilmAov, ParsesTheList) {
+    const AovSet s = parse_aovs("albedo, depth,samples");
+    EXPECT_TRUE(s.has(Aov::Albedo));
+    EXPECT_TRUE(s.has(Aov::Depth));
+    EXPECT_TRUE(s.has(Aov::Samples));
+    EXPECT_FALSE(s.has(Aov::Normal));
+    EXPECT_TRUE(s.needs_first_hit());
+    EXPECT_FALSE(parse_aovs("variance,samples").needs_first_hit());
+    EXPECT_FALSE(parse_aovs("").any());
+    const AovSet all = parse_aovs("all");
+    for (Aov a : {Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Position, Aov::Variance, Aov::Samples})
+        EXPECT_TRUE(all.has(a));
+    EXPECT_THROW(parse_aovs("albedo,emission"), std::invalid_argument);
+}
+
+TEST(FilmAov, FirstHitAveragesUseTheFilterWeights) {
+    Film film(2, 1, parse_aovs("all"));
+    // Pixel 0: two hits (weights 1 and 3) and a miss (weight 4).
+    film.add_sample(0, 0, {1, 1, 1}, 1, hit({0.2f, 0.4f, 0.6f}, {0, 0, 1}, {1, 2, 3}, 2));
+    film.add_sample(0, 0, {1, 1, 1}, 3, hit({0.6f, 0.4f, 0.2f}, {0, 1, 0}, {3, 2, 1}, 6));
+    film.add_sample(0, 0, {1, 1, 1}, 4, AovRecord{});
+    const Image albedo = film.resolve_aov(Aov::Albedo), normal = film.resolve_aov(Aov::Normal),
+                depth = film.resolve_aov(Aov::Depth), pos = film.resolve_aov(Aov::Position),
+                samples = film.resolve_aov(Aov::Samples);
+    ASSERT_EQ(albedo.channels, 3);
+    ASSERT_EQ(depth.channels, 1);
+    EXPECT_FLOAT_EQ(albedo.at(0, 0)[0], (0.2f * 1 + 0.6f * 3) / 8);
+    EXPECT_FLOAT_EQ(albedo.at(0, 0)[2], (0.6f * 1 + 0.2f * 3) / 8);
+    EXPECT_FLOAT_EQ(normal.at(0, 0)[1], 3.0f / 8);
+    EXPECT_FLOAT_EQ(normal.at(0, 0)[2], 1.0f / 8);
+    EXPECT_FLOAT_EQ(depth.at(0, 0)[0], (2.0f * 1 + 6 * 3) / 4);  // hits only
+    EXPECT_FLOAT_EQ(pos.at(0, 0)[0], (1.0f + 9) / 4);
+    EXPECT_EQ(samples.at(0, 0)[0], 3);
+    // Pixel 1: nothing was hit (and nothing sampled).
+    EXPECT_EQ(depth.at(1, 0)[0], Film::kNoHitDepth);
+    EXPECT_EQ(albedo.at(1, 0)[0], 0);
+    EXPECT_EQ(samples.at(1, 0)[0], 0);
+}
+
+TEST(FilmAov, VarianceIsThatOfTheMean) {
+    Film film(3, 1, parse_aovs("variance,samples"));
+    // Equal weights: the unbiased sample variance over n.
+    const float v[] = {1, 2, 4, 9};
+    for (float x : v) film.add_sample(0, 0, {x, 2 * x, 0}, 0.5f, AovRecord{});
+    // Unequal weights, with one sample dropped as non-finite.
+    film.add_sample(1, 0, {1, 0, 0}, 1, AovRecord{});
+    film.add_sample(1, 0, {3, 0, 0}, 3, AovRecord{});
+    film.add_sample(1, 0, {std::numeric_limits<float>::quiet_NaN(), 0, 0}, 2, AovRecord{});
+    // A single sample says nothing about its variance.
+    film.add_sample(2, 0, {5, 5, 5}, 1, AovRecord{});
+    const Image var = film.resolve_aov(Aov::Variance);
+    const double mean = 4, s2 = ((1 - mean) * (1 - mean) + 4 + 0 + 25) / 3;
+    EXPECT_NEAR(var.at(0, 0)[0], s2 / 4, 1e-6);
+    EXPECT_NEAR(var.at(0, 0)[1], 4 * s2 / 4, 1e-5);
+    EXPECT_EQ(var.at(0, 0)[2], 0);
+    // Weighted: mean 2.5, population variance 0.75, n_eff = 16 / 10.
+    EXPECT_NEAR(var.at(1, 0)[0], 0.75 / (1.6 - 1), 1e-6);
+    EXPECT_EQ(var.at(2, 0)[0], 0);
+    EXPECT_EQ(film.resolve_aov(Aov::Samples).at(1, 0)[0], 3);  // all samples taken
+    // The beauty is unaffected by the AOV bookkeeping.
+    EXPECT_FLOAT_EQ(film.resolve().at(1, 0)[0], 2.5f);
+}
+
+TEST(FilmAov, AovsNotAskedForAreBlank) {
+    Film film(1, 1, parse_aovs("depth"));
+    film.add_sample(0, 0, {1, 1, 1}, 1, hit({1, 1, 1}, {0, 0, 1}, {0, 0, 0}, 3));
+    EXPECT_FLOAT_EQ(film.resolve_aov(Aov::Depth).at(0, 0)[0], 3);
+    EXPECT_EQ(film.resolve_aov(Aov::Albedo).at(0, 0)[0], 0);
+}
+
+}  // namespace
+}  // namespace penumbra

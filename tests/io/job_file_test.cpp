@@ -1,0 +1,84 @@
+// Job files: defaults and per-scene overrides, paths relative to the file, and errors
+// that name the file and the element; and the frame-list syntax.
+#include "io/job_file.h"
+
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+
+namespace penumbra {
+namespace {
+
+TEST(JobFile, ReadsDefaultsAndEntriesWithPathsRelativeToTheFile) {
+    const JobFile f = parse_job_file(R"({
+        "defaults": {"spp": 64, "width": 320, "integrator": "path", "out_dir": "renders"},
+        "jobs": [
+            {"scene": "a.gltf"},
+            {"scene": "/abs/b.glb", "camera": "side", "height": 200, "seed": 7, "time": 1.5,
+             "output": "x/b.exr", "frames": "1-3", "fps": 30, "time_limit": 60}
+        ]})",
+                                     "/work/jobs/batch.json");
+    EXPECT_EQ(f.defaults.spp, 64u);
+    EXPECT_EQ(f.defaults.width, 320);
+    EXPECT_EQ(f.defaults.integrator, "path");
+    EXPECT_EQ(f.defaults.out_dir, "/work/jobs/renders");
+    ASSERT_EQ(f.jobs.size(), 2u);
+    EXPECT_EQ(f.jobs[0].scene, "/work/jobs/a.gltf");
+    EXPECT_FALSE(f.jobs[0].settings.spp);  // unset: inherits
+    EXPECT_EQ(f.jobs[0].where, "/work/jobs/batch.json: jobs[0]");
+    const JobSettings& b = f.jobs[1].settings;
+    EXPECT_EQ(f.jobs[1].scene, "/abs/b.glb");
+    EXPECT_EQ(b.camera, "side");
+    EXPECT_EQ(b.height, 200);
+    EXPECT_EQ(b.seed, 7u);
+    EXPECT_EQ(b.time, 1.5);
+    EXPECT_EQ(b.output, "/work/jobs/x/b.exr");
+    EXPECT_EQ(b.frames, "1-3");
+    EXPECT_EQ(b.fps, 30.0);
+    EXPECT_EQ(b.time_limit, 60.0);
+}
+
+TEST(JobFile, ErrorsNameTheFileAndElement) {
+    auto message = [](const std::string& text) {
+        try {
+            parse_job_file(text, "j.json");
+        } catch (const SceneError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(message("{\"jobs\": [").rfind("j.json: not valid JSON", 0), 0u);
+    EXPECT_EQ(message("{}"), "j.json: jobs: expected a non-empty array of {\"scene\": ...}");
+    EXPECT_EQ(message(R"({"jobs": [{"spp": 4}]})"),
+              "j.json: jobs[0].scene: expected the scene file's path");
+    EXPECT_EQ(message(R"({"jobs": [{"scene": "a.gltf", "spp": 0}]})"),
+              "j.json: jobs[0].spp: expected an integer in [1, 16777216]");
+    EXPECT_EQ(message(R"({"jobs": [{"scene": "a.gltf", "width": 1.5}]})"),
+              "j.json: jobs[0].width: expected an integer in [1, 32768]");
+    EXPECT_EQ(message(R"({"jobs": [{"scene": "a.gltf", "fps": -2}]})"),
+              "j.json: jobs[0].fps: expected a positive number");
+    EXPECT_EQ(message(R"({"jobs": [{"scene": "a.gltf", "seed": -1}]})"),
+              "j.json: jobs[0].seed: expected a non-negative integer");
+    EXPECT_EQ(message(R"({"defaults": {"camera": 3}, "jobs": [{"scene": "a.gltf"}]})"),
+              "j.json: defaults.camera: expected a non-empty string");
+    EXPECT_EQ(message(R"({"jobs": [{"scene": "a.gltf", "frames": "9-2"}]})")
+                  .rfind("j.json: jobs[0].frames: frames '9-2': 2 comes before 9", 0),
+              0u);
+    EXPECT_NE(message(R"({"jobs": [{"scene": "a.gltf", "sp": 4}]})")
+                  .find("j.json: jobs[0].sp: unknown key (expected one of: scene, camera"),
+              std::string::npos);
+    EXPECT_EQ(message(R"({"job": []})"), "j.json: unknown key 'job' (expected defaults, jobs)");
+}
+
+TEST(JobFile, FrameLists) {
+    EXPECT_EQ(parse_frame_list("7"), std::vector<int>({7}));
+    EXPECT_EQ(parse_frame_list("1-4"), std::vector<int>({1, 2, 3, 4}));
+    EXPECT_EQ(parse_frame_list("1-8:3"), std::vector<int>({1, 4, 7}));
+    EXPECT_EQ(parse_frame_list("0,5,10-11"), std::vector<int>({0, 5, 10, 11}));
+    EXPECT_EQ(parse_frame_list("1-48").size(), 48u);
+    for (const char* bad : {"", "a", "3-", "-3", "5-1", "1-4:0", "1,,2", "1-1000000"})
+        EXPECT_THROW(parse_frame_list(bad), std::invalid_argument) << bad;
+}
+
+}  // namespace
+}  // namespace penumbra
