@@ -13,9 +13,9 @@ float sqr(float x) { return x * x; }
 
 }  // namespace
 
+// An index-matched interface (eta 1) passes light straight through: a Dirac lobe whatever
+// the roughness (the refracted half vector degenerates).
 DielectricBsdf::DielectricBsdf(const DielectricParams& p)
-    // An index-matched interface (eta 1) passes light straight through: a Dirac lobe
-    // whatever the roughness (the refracted half vector degenerates).
     : m_p(p), m_dist(p.distribution, p.alpha), m_delta(p.alpha < kDeltaAlpha || p.eta == 1) {
     CHECK(p.masking != MaskingModel::VCavity, "the V-cavity masking has no transmission");
     CHECK(p.eta > 0);
