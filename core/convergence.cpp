@@ -74,19 +74,21 @@ std::optional<TimeToError> time_to_error(const std::vector<double>& seconds,
     if (n == 0 || !(target > 0)) return std::nullopt;
     for (size_t i = 0; i < n; ++i) {
         if (!(error[i] <= target)) continue;
-        if (i == 0) return TimeToError{seconds[0], false};
+        if (i == 0) return TimeToError{seconds[0], false, true};
         // Error and time both follow power laws, so interpolate linearly in log-log.
         const double t0 = std::log(seconds[i - 1]), t1 = std::log(seconds[i]);
         const double e0 = std::log(error[i - 1]), e1 = std::log(error[i]);
-        if (!std::isfinite(t0 + t1 + e0 + e1) || !(e1 < e0)) return TimeToError{seconds[i], false};
+        if (!std::isfinite(t0 + t1 + e0 + e1) || !(e1 < e0))
+            return TimeToError{seconds[i], false, false};
         return TimeToError{std::exp(t0 + (std::log(target) - e0) / (e1 - e0) * (t1 - t0)),
-                           false};
+                           false, false};
     }
     // Not reached: follow the power law fitted to all points (one noisy segment would
     // give a wild answer), if the error falls at all.
     const std::optional<LogLogFit> fit = fit_log_log(seconds, error);
     if (!fit || !(fit->slope < 0)) return std::nullopt;
-    return TimeToError{std::exp((std::log(target) - fit->intercept) / fit->slope), true};
+    return TimeToError{std::exp((std::log(target) - fit->intercept) / fit->slope), true,
+                       false};
 }
 
 }  // namespace penumbra

@@ -27,6 +27,7 @@ std::optional<double> log_log_slope(const std::vector<double>& x, const std::vec
 struct TimeToError {
     double seconds = 0;
     bool extrapolated = false;  // beyond the measured points, along the fitted power law
+    bool at_most = false;       // the first point was already there: no later than this
 };
 
 // When the error first reaches `target`, from measured (time, error) points in time

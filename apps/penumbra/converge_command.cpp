@@ -259,7 +259,7 @@ int run_converge_command(const ConvergeOptions& o) {
         table += row(c.name, std::to_string(last.spp), fmt("%.3f", t), fmt("%.4e", last.mse),
                      fmt("%.4e", last.relmse), fmt("%.4e", last.mse * t),
                      slope ? fmt("%.3f", *slope) : "-",
-                     reach ? fmt("%.3g s", reach->seconds) +
+                     reach ? (reach->at_most ? "<= " : "") + fmt("%.3g s", reach->seconds) +
                                  (reach->extrapolated ? " (extrapolated)" : "")
                            : "not reached");
         series.push_back(std::move(plot));

@@ -68,7 +68,8 @@ double since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-// Output outside the render loop that a batch needs to coordinate.
+// What the images of a batch share: the overall bar, the Ctrl-C count and the outputs
+// claimed so far (two images must not write one file).
 struct BatchState {
     BatchProgress& progress;
     const std::atomic<int>& interrupts;

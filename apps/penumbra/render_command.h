@@ -56,8 +56,9 @@ struct RenderCommandOptions {
 };
 
 void add_render_command(CLI::App& app, RenderCommandOptions& options);
-// Renders every scene; one failing scene does not stop the others. Returns the exit
-// status: 0 when all succeeded.
+// Renders every image of the batch; one failing scene does not stop the others. Returns
+// the exit status: 0 when all rendered or were skipped, 1 if any failed, 130 after
+// Ctrl-C.
 int run_render_command(const RenderCommandOptions& options);
 
 }  // namespace penumbra

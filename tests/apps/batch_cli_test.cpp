@@ -231,7 +231,9 @@ TEST(BatchCli, SecondCtrlCAbandonsTheImageWithoutTempFiles) {
     EXPECT_FALSE(has_temp_files(dir.file("")));
     // Normally nothing is written; should the pass have ended between the two signals,
     // the file is a complete partial image.
-    if (fs::exists(out)) EXPECT_EQ(attribute(out, "penumbra:partial"), "1");
+    if (fs::exists(out)) {
+        EXPECT_EQ(attribute(out, "penumbra:partial"), "1");
+    }
     // The batch stops: the second scene does not start.
     EXPECT_FALSE(fs::exists(dir.file("Box.exr")));
     EXPECT_TRUE(std::regex_search(r.output, std::regex("Box\\.gltf +- +skipped")))

@@ -129,8 +129,9 @@ TEST(ConvergeCli, MseFallsAsOneOverSppAndFilesAreWellFormed) {
         EXPECT_EQ(rows[i].config, "default");
         EXPECT_EQ(rows[i].spp, double(1 << i));
         EXPECT_GT(rows[i].seconds, 0);
-        if (i > 0) EXPECT_LT(rows[i].mse, rows[i - 1].mse) << "at " << rows[i].spp << " spp";
-        if (i > 0) EXPECT_LT(rows[i].relmse, rows[i - 1].relmse) << "at " << rows[i].spp;
+        if (i == 0) continue;
+        EXPECT_LT(rows[i].mse, rows[i - 1].mse) << "at " << rows[i].spp << " spp";
+        EXPECT_LT(rows[i].relmse, rows[i - 1].relmse) << "at " << rows[i].spp << " spp";
     }
     // Independent samples: MSE = variance / spp, so the log-log slope is -1 (a little
     // shallower from the reference's own noise, 1/16 of the last image's).

@@ -62,6 +62,7 @@ TEST(Convergence, TimeToErrorInterpolatesAndExtrapolatesInLogLog) {
     ASSERT_TRUE(r);
     EXPECT_NEAR(r->seconds, 10.0, 1e-9);
     EXPECT_FALSE(r->extrapolated);
+    EXPECT_FALSE(r->at_most);
     // Beyond the last point: along the fitted power law.
     r = time_to_error(t, e, 1e-4);
     ASSERT_TRUE(r);
@@ -70,6 +71,7 @@ TEST(Convergence, TimeToErrorInterpolatesAndExtrapolatesInLogLog) {
     // Already there at the first point.
     r = time_to_error(t, e, 0.5);
     EXPECT_EQ(r->seconds, 1.0);
+    EXPECT_TRUE(r->at_most);
     EXPECT_FALSE(r->extrapolated);
     // The first crossing counts even if a later noisy point rises again. In log-log,
     // 0.1 is halfway from 0.2 to 0.05, so the time is halfway from 1 to 2: sqrt(2).

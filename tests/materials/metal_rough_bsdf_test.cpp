@@ -189,15 +189,29 @@ void expect_white_furnace(float metallic) {
 
 TEST(MetalRoughBsdf, WhiteFurnaceMetal) { expect_white_furnace(1.0f); }
 
-// Disabled: the glTF 2.0 dielectric BRDF (spec Appendix B, fresnel_mix) gains energy
-// away from normal incidence. The diffuse base is weighted by 1 - F(v.h), and for
-// light arriving near the normal v.h stays large while the specular lobe reflects
-// F(n.v): at wo.z = 0.05 a white dielectric reflects about 1.7 (1.35 at metallic 0.5),
-// at wo.z = 0.7 about 1.0006. This follows the spec, so it is not fixed here; enable this
-// once the model conserves energy (e.g. albedo scaling of the base).
-TEST(MetalRoughBsdf, DISABLED_WhiteFurnaceDielectric) {
-    expect_white_furnace(0.0f);
-    expect_white_furnace(0.5f);
+// The glTF 2.0 dielectric BRDF (spec Appendix B, fresnel_mix) gains energy away from
+// normal incidence: the diffuse base is weighted by 1 - F(v.h), and for light arriving
+// near the normal v.h stays large while the specular lobe reflects F(n.v). A white
+// dielectric reflects about 1.0006 at wo.z = 0.7, 1.15 at 0.3 and 1.7 at 0.05 (1.35 at
+// metallic 0.5). We implement the spec as written (an open decision, see issue "Light
+// transport"), so this pins the spec's behaviour: near-conserving close to the normal,
+// and a bounded grazing gain that must not grow. Replace it by expect_white_furnace once
+// the model conserves energy (e.g. albedo scaling of the base).
+TEST(MetalRoughBsdf, WhiteFurnaceDielectricFollowsTheSpec) {
+    for (float metallic : {0.0f, 0.5f})
+        for (float roughness : {0.0f, 0.05f, 0.3f, 0.7f, 1.0f})
+            for (float cos_o : kCosOs) {
+                MetalRoughParams p;
+                p.base_color = Spectrum(1);
+                p.alpha = roughness * roughness;
+                p.metallic = metallic;
+                const Vec3 wo = spherical_direction(cos_o, 1.3f);
+                const test::AlbedoEstimate a =
+                    test::directional_albedo(MetalRoughBsdf(p), wo, 20000, 9);
+                const float bound = cos_o >= 0.7f ? 1.002f : 1.8f;
+                EXPECT_LE(a.mean.x, bound + 3 * a.std_error.x)
+                    << describe(p, wo) << ": albedo " << a.mean.x << " +- " << a.std_error.x;
+            }
 }
 
 TEST(MetalRoughBsdf, WhiteMirrorReflectsEverything) {
