@@ -25,10 +25,8 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
         const Vec3 wo_world = normalize(-ray.d);
         const ShadingData sd = shade(ctx.scene, sp, wo_world, ctx.materials);
-        if (sd.opacity < 1 && (sd.opacity <= 0 || sampler.get_1d() >= sd.opacity)) {
-            if (++passes > 256) break;
-            ray.o = offset_ray_origin(sp.p, sd.ng, ray.d);
-            ray.tmin = 0;
+        if (pass_through(sp, sd, sampler, ray)) {
+            if (++passes > 256) break;  // a stack of holes ends the path
             continue;
         }
         L += beta * sd.emission;

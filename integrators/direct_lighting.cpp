@@ -2,6 +2,13 @@
 
 namespace penumbra {
 
+bool pass_through(const SurfacePoint& sp, const ShadingData& sd, Sampler& sampler, Ray& ray) {
+    if (sd.opacity >= 1 || (sd.opacity > 0 && sampler.get_1d() < sd.opacity)) return false;
+    ray.o = offset_ray_origin(sp.p, sd.ng, ray.d);
+    ray.tmin = 0;
+    return true;
+}
+
 bool unoccluded(const RenderContext& ctx, Ray ray, Sampler& sampler) {
     if (!ctx.has_alpha) return !ctx.accel.occluded(ray);
     // Walk through surfaces that let light through (stochastic alpha, as on camera

@@ -17,6 +17,11 @@ inline float power_heuristic(float nf, float f_pdf, float ng, float g_pdf) {
     return denom > 0 ? (f * f) / denom : 0.0f;
 }
 
+// Stochastic transparency (glTF alpha MASK/BLEND) at a camera-path hit: true when the
+// ray passes through the surface with probability 1 - opacity; the ray then continues
+// from just beyond it. Draws a sample only for partial coverage.
+bool pass_through(const SurfacePoint& sp, const ShadingData& sd, Sampler& sampler, Ray& ray);
+
 // Whether the segment `ray` reaches its tmax unblocked. Surfaces with partial coverage
 // (alpha) block with probability alpha.
 bool unoccluded(const RenderContext& ctx, Ray ray, Sampler& sampler);

@@ -37,11 +37,8 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         const Vec3 wo_world = normalize(-ray.d);
         const ShadingData sd = shade(ctx.scene, sp, wo_world, ctx.materials);
 
-        // Stochastic transparency: pass through with probability 1 - opacity.
-        if (sd.opacity < 1 && (sd.opacity <= 0 || sampler.get_1d() >= sd.opacity)) {
-            if (++passes > 256) break;
-            ray.o = offset_ray_origin(sp.p, sd.ng, ray.d);
-            ray.tmin = 0;
+        if (pass_through(sp, sd, sampler, ray)) {
+            if (++passes > 256) break;  // a stack of holes ends the path
             continue;
         }
 

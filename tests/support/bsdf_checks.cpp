@@ -6,7 +6,8 @@ namespace penumbra::test {
 
 Chi2Result bsdf_chi2(const Bsdf& bsdf, Vec3 wo, const BsdfChi2Options& o, Transport mode) {
     SphereChi2Options so;
-    so.hemisphere = true;
+    so.hemisphere = !o.full_sphere;
+    so.cos_bins = o.cos_bins;
     so.samples = o.samples;
     so.seed = o.seed;
     so.significance = o.significance;

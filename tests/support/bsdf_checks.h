@@ -14,9 +14,12 @@ struct BsdfChi2Options {
     // Specular samples carry a lobe probability, not a density: by default they count
     // as "no sample", so pdf() must integrate to 1 - P(specular).
     bool keep_specular = false;
+    // Bin wi over the whole sphere (models that transmit) instead of the upper hemisphere.
+    bool full_sphere = false;
+    int cos_bins = 10;
 };
 
-// Reflection only: a sample below the horizon fails the test.
+// Over the upper hemisphere a sample below the horizon fails the test.
 Chi2Result bsdf_chi2(const Bsdf& bsdf, Vec3 wo, const BsdfChi2Options& options,
                      Transport mode = Transport::Radiance);
 

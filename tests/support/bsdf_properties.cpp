@@ -24,21 +24,10 @@ std::string str(Vec3 v) {
 }  // namespace
 
 Chi2Result bsdf_chi2_sphere(const Bsdf& bsdf, Vec3 wo, const BsdfChi2Options& o, Transport mode) {
-    SphereChi2Options so;
-    so.hemisphere = false;
-    so.cos_bins = 20;
-    so.samples = o.samples;
-    so.seed = o.seed;
-    so.significance = o.significance;
-    return chi2_sphere(
-        [&](Rng& rng) -> std::optional<Vec3> {
-            const float u_lobe = rng.next_float();
-            const Vec2 u(rng.next_float(), rng.next_float());
-            const std::optional<BsdfSample> s = bsdf.sample(wo, u_lobe, u, mode);
-            if (!s || (s->is_specular() && !o.keep_specular)) return std::nullopt;
-            return s->wi;
-        },
-        [&](Vec3 wi) { return double(bsdf.pdf(wo, wi, mode)); }, so);
+    BsdfChi2Options sphere = o;
+    sphere.full_sphere = true;
+    sphere.cos_bins = 20;
+    return bsdf_chi2(bsdf, wo, sphere, mode);
 }
 
 Chi2Result bsdf_chi2_half_vector(const Bsdf& bsdf, Vec3 wo, float alpha, float eta,
