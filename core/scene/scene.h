@@ -26,7 +26,13 @@ struct TriangleMesh {
     std::vector<Vec4> colors;     // COLOR_0 as linear RGBA; empty when absent
     std::vector<uint32_t> indices;  // 3 per triangle
     int material = -1;              // index into Scene::materials; -1: glTF default
-    Bounds3 bounds;
+    Bounds3 bounds;                 // with motion: of every time step
+    // Deformation motion (skins, morph targets): empty for a mesh that does not deform
+    // within the shutter. Otherwise K >= 2 time steps at normalized shutter times
+    // k / (K - 1), as Embree's time-sampled geometry; step 0 equals positions/normals.
+    // Positions and normals between steps are interpolated linearly (Embree's rule).
+    std::vector<std::vector<Vec3>> motion_positions;
+    std::vector<std::vector<Vec3>> motion_normals;
 
     size_t triangle_count() const { return indices.size() / 3; }
 };
@@ -42,7 +48,12 @@ struct Object {
 // A node that references an object, with its flattened world transform.
 struct Instance {
     uint32_t object = 0;
-    Transform to_world;
+    Transform to_world;  // with motion: the transform at shutter open (= motion[0])
+    // Transform motion: empty for an instance that does not move within the shutter.
+    // Otherwise K >= 2 world transforms at normalized shutter times k / (K - 1), the
+    // time steps Embree receives (as quaternion decompositions, so rotations do not
+    // shrink objects). core/scene/motion.h interpolates them at a ray's time.
+    std::vector<Transform> motion;
     int node = -1;  // glTF node index, for messages and AOVs
     std::string name;
 };
@@ -59,6 +70,9 @@ struct CameraDesc {
     float znear = 0.01f;
     float zfar = 0;           // 0: infinite
     Transform to_world;       // camera looks down its local -Z, +Y up (glTF)
+    // Camera motion, as Instance::motion: empty when the camera does not move within
+    // the shutter.
+    std::vector<Transform> motion;
     int node = -1;
     // Thin lens (perspective only). aperture_radius 0 is a pinhole. From the file's
     // EXT_cameras_sensor / camera extras when present, else overridden on the command line.
@@ -79,6 +93,10 @@ struct Scene {
     std::vector<Texture> textures;
     std::vector<CameraDesc> cameras;
     std::vector<std::unique_ptr<Light>> lights;
+    // The exposure interval in the glTF animation's seconds: a ray's normalized time
+    // u in [0, 1] is the instant shutter_open + u * (shutter_close - shutter_open).
+    // Equal for a still (the default: both 0, the scene as its nodes place it).
+    double shutter_open = 0, shutter_close = 0;
 
     // World-space bounds of all instances.
     Bounds3 bounds() const;
