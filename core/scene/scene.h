@@ -49,13 +49,13 @@ struct Object {
 struct Instance {
     uint32_t object = 0;
     Transform to_world;  // with motion: the transform at shutter open (= motion[0])
+    int node = -1;  // glTF node index, for messages and AOVs
+    std::string name;
     // Transform motion: empty for an instance that does not move within the shutter.
     // Otherwise K >= 2 world transforms at normalized shutter times k / (K - 1), the
     // time steps Embree receives (as quaternion decompositions, so rotations do not
     // shrink objects). core/scene/motion.h interpolates them at a ray's time.
     std::vector<Transform> motion;
-    int node = -1;  // glTF node index, for messages and AOVs
-    std::string name;
 };
 
 enum class ProjectionType { Perspective, Orthographic };
