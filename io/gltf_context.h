@@ -49,8 +49,11 @@ void load_meshes(const GltfContext& ctx, Scene& scene);
 // (gltf_material.cpp). Only images that a material references are decoded.
 void load_materials(const GltfContext& ctx, Scene& scene);
 
-// Instances, cameras and lights of glTF scene `scene_index` (gltf_nodes.cpp); needs
-// the objects from load_meshes.
-void load_nodes(const GltfContext& ctx, int scene_index, Scene& scene);
+class NodeMotion;
+
+// Instances, cameras and lights of glTF scene `scene_index` (gltf_nodes.cpp), posed at
+// shutter open, with time steps for what moves within the shutter (`motion`); needs the
+// objects from load_meshes.
+void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motion, Scene& scene);
 
 }  // namespace penumbra

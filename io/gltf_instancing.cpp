@@ -39,7 +39,7 @@ std::optional<std::vector<float>> attribute(const GltfContext& ctx, const std::s
 
 bool add_gpu_instances(const GltfContext& ctx, const std::string& node_el,
                        const tinygltf::Node& node, int node_index, const Transform& world,
-                       Scene& scene) {
+                       const std::vector<Transform>& motion, Scene& scene) {
     const auto it = node.extensions.find("EXT_mesh_gpu_instancing");
     if (it == node.extensions.end()) return false;
     const std::string el = node_el + ".extensions.EXT_mesh_gpu_instancing";
@@ -69,7 +69,12 @@ bool add_gpu_instances(const GltfContext& ctx, const std::string& node_el,
         }
         // Instances are unnamed: a million copies of the node name would cost more than
         // the instances themselves. Their node index identifies them.
-        scene.instances.push_back(Instance{uint32_t(node.mesh), world * local, node_index, {}});
+        Instance inst;
+        inst.object = uint32_t(node.mesh);
+        inst.to_world = world * local;
+        for (const Transform& step : motion) inst.motion.push_back(step * local);
+        inst.node = node_index;
+        scene.instances.push_back(std::move(inst));
     }
     return true;
 }

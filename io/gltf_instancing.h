@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/scene/scene.h"
 #include "io/gltf_context.h"
@@ -11,8 +12,11 @@
 namespace penumbra {
 
 // True when the node carries the extension: its instances were appended to
-// scene.instances (parent world transform times each instance's TRS).
+// scene.instances (the node's world transform times each instance's TRS). A node that
+// moves (`motion`: its world transforms at the shutter's time steps, empty if still)
+// moves its instances with it.
 bool add_gpu_instances(const GltfContext& ctx, const std::string& el, const tinygltf::Node& node,
-                       int node_index, const Transform& world, Scene& scene);
+                       int node_index, const Transform& world,
+                       const std::vector<Transform>& motion, Scene& scene);
 
 }  // namespace penumbra

@@ -4,13 +4,16 @@
 #include "io/gltf_loader.h"
 
 #include <cctype>
+#include <cmath>
 #include <cstring>
 #include <exception>
 #include <filesystem>
 #include <fstream>
 
 #include "core/log.h"
+#include "io/gltf_animation.h"
 #include "io/gltf_context.h"
+#include "io/gltf_node_motion.h"
 #include "io/scene_color.h"
 
 namespace penumbra {
@@ -147,19 +150,36 @@ void GltfContext::warn_once(const std::string& element, const std::string& probl
     log_once(LogLevel::Warning, file + ": " + element + ": " + problem);
 }
 
+GltfAnimations load_gltf_animations(const std::string& path) {
+    const tinygltf::Model model = parse(path);
+    const GltfContext ctx{model, path};
+    return GltfAnimations(ctx);
+}
+
 Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
     const tinygltf::Model model = parse(path);
     const GltfContext ctx{model, path, options.rec709_to_working};
     check_asset_and_extensions(ctx);
 
+    const Shutter shutter{options.shutter_open, options.shutter_close};
+    if (!std::isfinite(shutter.open) || !std::isfinite(shutter.close) ||
+        shutter.close < shutter.open)
+        throw SceneError(path + ": shutter [" + std::to_string(shutter.open) + ", " +
+                         std::to_string(shutter.close) + "] s: it must be finite and open "
+                         "no later than it closes");
+
     Scene scene;
     scene.source = path;
+    scene.shutter_open = shutter.open;
+    scene.shutter_close = shutter.close;
     load_meshes(ctx, scene);
     load_materials(ctx, scene);
     convert_scene_colors(scene, options.rec709_to_working);
+    const GltfAnimations animations(ctx);
+    const NodeMotion motion(ctx, animations, shutter);
     const int scene_index = choose_scene(ctx, options.scene);
     if (scene_index >= 0)
-        load_nodes(ctx, scene_index, scene);
+        load_nodes(ctx, scene_index, motion, scene);
     else
         ctx.warn("scenes", "the file defines no scene; nothing will be rendered");
     return scene;

@@ -15,9 +15,15 @@ struct GltfLoadOptions {
     // glTF's linear Rec.709 colours (factors, colour textures, vertex and light colours)
     // into the working space (io/scene_color.h); identity: left as they are.
     Mat3 rec709_to_working = Mat3::identity();
+    // The exposure interval in the file's animation seconds (Scene::shutter_open/close).
+    // Nodes are posed at shutter_open; what moves before shutter_close gets time steps.
+    // Equal values are a still at that time; both 0 (the default) is the file's pose at
+    // time 0, which for a file without animations is its nodes' own transforms.
+    double shutter_open = 0, shutter_close = 0;
 };
 
-// Loads the file at path. Cameras and lights are only those the file defines; the
+// Loads the file at path; throws SceneError for bad input, including a shutter that
+// closes before it opens. Cameras and lights are only those the file defines; the
 // caller adds defaults (see camera/default_camera.h).
 Scene load_gltf(const std::string& path, const GltfLoadOptions& options = {});
 

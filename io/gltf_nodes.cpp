@@ -1,5 +1,7 @@
 // The chosen glTF scene's node tree to Instances, CameraDescs and KHR_lights_punctual
-// lights, each with its flattened world transform (parent * local).
+// lights, each with its flattened world transform (parent * local), and for those that
+// move within the shutter, their world transforms at its time steps (gltf_node_motion.h).
+// Lights take their pose at shutter open.
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -11,6 +13,7 @@
 #include "core/camera/thin_lens_camera.h"
 #include "io/gltf_context.h"
 #include "io/gltf_instancing.h"
+#include "io/gltf_node_motion.h"
 
 namespace penumbra {
 
@@ -190,7 +193,7 @@ std::unique_ptr<Light> make_light(const GltfContext& ctx, const LightNode& ln, f
 
 }  // namespace
 
-void load_nodes(const GltfContext& ctx, int scene_index, Scene& scene) {
+void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motion, Scene& scene) {
     const tinygltf::Model& m = ctx.model;
     const std::string sel = element("scenes", size_t(scene_index));
     std::vector<bool> visited(m.nodes.size(), false);
@@ -212,25 +215,41 @@ void load_nodes(const GltfContext& ctx, int scene_index, Scene& scene) {
         visited[size_t(index)] = true;
         const tinygltf::Node& node = m.nodes[size_t(index)];
         Transform world;
+        // World transforms at the shutter's time steps; empty: still within the shutter.
+        std::vector<Transform> steps;
         try {
-            world = parent * local_transform(ctx, el, node);
+            const Transform local = local_transform(ctx, el, node);
+            if (motion.moves(index)) {
+                // Animated (or under an animated parent): the pose at shutter open.
+                steps = motion.world_motion(index);
+                world = steps.empty() ? Transform(motion.world(index, motion.shutter().open))
+                                      : steps.front();
+            } else {
+                world = parent * local;
+            }
         } catch (const std::invalid_argument&) {
             // Zero scale is valid glTF (it hides a subtree); nothing below can be seen.
-            ctx.warn(el, "singular transform (zero scale?); its subtree is skipped");
+            ctx.warn(el, "singular transform (zero scale?) at a time step; its subtree is "
+                         "skipped");
             continue;
         }
         if (node.mesh != -1) {
             ctx.check_index(el, "mesh", node.mesh, m.meshes.size(), "meshes");
-            if (node.skin != -1)
-                ctx.warn_once("nodes", "skins are ignored (meshes keep their bind pose)");
             if (!scene.objects[size_t(node.mesh)].meshes.empty() &&
-                !add_gpu_instances(ctx, el, node, index, world, scene))
-                scene.instances.push_back(Instance{uint32_t(node.mesh), world, index,
-                                                   node.name.empty() ? el : node.name});
+                !add_gpu_instances(ctx, el, node, index, world, steps, scene)) {
+                Instance inst;
+                inst.object = uint32_t(node.mesh);
+                inst.to_world = world;
+                inst.motion = std::move(steps);
+                inst.node = index;
+                inst.name = node.name.empty() ? el : node.name;
+                scene.instances.push_back(std::move(inst));
+            }
         }
         if (node.camera != -1) {
             ctx.check_index(el, "camera", node.camera, m.cameras.size(), "cameras");
             CameraDesc c = make_camera(ctx, node.camera, node, world);
+            for (const Transform& step : steps) c.motion.push_back(rigid(step));
             c.node = index;
             scene.cameras.push_back(std::move(c));
         }

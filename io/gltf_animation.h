@@ -1,0 +1,82 @@
+// glTF animations: samplers (key times and values) and the channels that drive node
+// translation, rotation, scale and morph-target weights, validated at load and sampled
+// at any time exactly as glTF 2.0, Appendix C specifies.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/math/transform.h"
+
+namespace penumbra {
+
+struct GltfContext;
+
+enum class Interpolation { Step, Linear, CubicSpline };
+
+// One animation sampler as a curve over time. `values` holds `width` numbers per key;
+// CUBICSPLINE keys hold three groups each (in-tangent, value, out-tangent), as the file
+// stores them.
+struct AnimationCurve {
+    std::vector<double> times;  // seconds, strictly increasing, first >= 0
+    std::vector<double> values;
+    size_t width = 0;           // 3 (translation, scale), 4 (rotation), targets (weights)
+    Interpolation interpolation = Interpolation::Linear;
+    bool quaternion = false;    // rotation (x, y, z, w): slerp, and normalized results
+
+    // The value at time t into out[0, width): the first key's before it, the last key's
+    // after it (Appendix C clamps), else interpolated in the key interval holding t.
+    void sample(double t, double* out) const;
+    std::vector<double> sample(double t) const;
+};
+
+// The animated properties of one node; nullptr where a property is not animated.
+struct NodeChannels {
+    const AnimationCurve* translation = nullptr;
+    const AnimationCurve* rotation = nullptr;
+    const AnimationCurve* scale = nullptr;
+    const AnimationCurve* weights = nullptr;
+
+    bool animates_transform() const { return translation || rotation || scale; }
+};
+
+// Translation, rotation (unit quaternion, glTF's x y z w) and scale, in double.
+struct NodePose {
+    double t[3] = {0, 0, 0};
+    double r[4] = {0, 0, 0, 1};
+    double s[3] = {1, 1, 1};
+
+    Transform transform() const;  // T * R * S; throws std::invalid_argument for zero scale
+};
+
+// Every animation of a file, played together on one timeline starting at 0 s. A node
+// property animated by two animations takes the first one's channel (with a warning).
+class GltfAnimations {
+public:
+    GltfAnimations() = default;
+    // Reads and validates ctx.model.animations; throws SceneError
+    // "<file>: animations[i].samplers[j]: <problem>" (or .channels[j]).
+    explicit GltfAnimations(const GltfContext& ctx);
+
+    bool empty() const { return m_curves.empty(); }
+    // The node's channels; nullptr when no channel targets it.
+    const NodeChannels* node(int index) const;
+    // The node's pose at time t: its translation/rotation/scale with the animated ones
+    // replaced by their samples. `rest` is the node's own TRS.
+    NodePose pose(int index, const NodePose& rest, double t) const;
+
+    // Channels point into m_curves: moving keeps them valid, copying would not.
+    GltfAnimations(GltfAnimations&&) = default;
+    GltfAnimations& operator=(GltfAnimations&&) = default;
+    GltfAnimations(const GltfAnimations&) = delete;
+    GltfAnimations& operator=(const GltfAnimations&) = delete;
+
+private:
+    std::vector<AnimationCurve> m_curves;
+    std::vector<NodeChannels> m_nodes;  // per glTF node; empty when nothing is animated
+};
+
+// Reads the animations of the glTF file at path (for tests and tools); throws SceneError.
+GltfAnimations load_gltf_animations(const std::string& path);
+
+}  // namespace penumbra
