@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/scene/motion.h"
+
 namespace penumbra {
 
 SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
@@ -20,8 +22,11 @@ SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& h
     sp.prim = hit.prim;
     sp.material = mesh.material;
 
-    const Transform& xf = inst.to_world;
-    const Vec3 p0 = mesh.positions[i0], p1 = mesh.positions[i1], p2 = mesh.positions[i2];
+    // The surface where it was at the ray's time (motion.h: the static data when the
+    // instance or mesh does not move).
+    const Transform xf = instance_transform_at(inst, ray.time);
+    const Vec3 p0 = position_at(mesh, i0, ray.time), p1 = position_at(mesh, i1, ray.time),
+               p2 = position_at(mesh, i2, ray.time);
     // Interpolating the vertices is more accurate than o + t d far from the origin.
     sp.p = xf.point(p0 * b0 + p1 * b1 + p2 * b2);
     const Vec3 e1 = p1 - p0, e2 = p2 - p0;
@@ -34,7 +39,9 @@ SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& h
 
     Vec3 ns = ng;
     if (!mesh.normals.empty()) {
-        const Vec3 n = mesh.normals[i0] * b0 + mesh.normals[i1] * b1 + mesh.normals[i2] * b2;
+        const Vec3 n0 = normal_at(mesh, i0, ray.time), n1 = normal_at(mesh, i1, ray.time),
+                   n2 = normal_at(mesh, i2, ray.time);
+        const Vec3 n = n0 * b0 + n1 * b1 + n2 * b2;
         const Vec3 nw = xf.normal(n);
         const float len = length(nw);
         if (len > 0 && std::isfinite(len)) ns = nw / len;

@@ -9,6 +9,7 @@
 
 #include "core/sampling/rng.h"
 #include "core/sampling/warp.h"
+#include "core/scene/motion.h"
 #include "core/surface_point.h"
 
 namespace penumbra {
@@ -61,10 +62,14 @@ std::vector<CheckRay> make_random_rays(const Scene& scene, size_t count, uint64_
     b.lo -= grow;
     b.hi += grow;
     Rng rng(seed, 2);
+    // Times from their own stream, so a static scene's rays stay as they were.
+    Rng time_rng(seed, 3);
+    const bool moves = scene_has_motion(scene);
     std::vector<CheckRay> rays(count);
     for (CheckRay& r : rays) {
         r.ray.o = random_point(rng, b);
         r.ray.d = square_to_uniform_sphere({rng.next_float(), rng.next_float()});
+        if (moves) r.ray.time = time_rng.next_float();
         r.kind = RayKind::Random;
     }
     return rays;
@@ -74,11 +79,14 @@ std::vector<CheckRay> make_check_rays(const Scene& scene, const Camera& camera,
                                       const Accel& reference, const CheckRayOptions& options) {
     std::vector<CheckRay> rays;
     Rng rng(options.seed, 1);
+    Rng time_rng(options.seed, 4);
+    const bool moves = scene_has_motion(scene);
     for (int y = 0; y < camera.height(); ++y)
         for (int x = 0; x < camera.width(); ++x) {
             CameraSample cs;
             cs.film = {x + rng.next_float(), y + rng.next_float()};
             cs.lens = {rng.next_float(), rng.next_float()};
+            if (moves) cs.time = time_rng.next_float();
             rays.push_back({camera.generate_ray(cs), RayKind::Camera});
         }
     const size_t camera_rays = rays.size();
@@ -87,24 +95,31 @@ std::vector<CheckRay> make_check_rays(const Scene& scene, const Camera& camera,
 
     // Surface rays start where the reference's camera rays hit, like a path's second
     // vertex: shadow rays to random points (a light anywhere), bounce rays anywhere.
+    // A path keeps its camera ray's time: surface rays leave the point where the surface
+    // was at that time, at that time.
     std::vector<SurfacePoint> points;
+    std::vector<float> times;
     for (size_t i = 0; i < camera_rays; ++i)
-        if (const auto hit = reference.intersect(rays[i].ray))
+        if (const auto hit = reference.intersect(rays[i].ray)) {
             points.push_back(make_surface_point(scene, rays[i].ray, *hit));
+            times.push_back(rays[i].ray.time);
+        }
     if (points.empty()) return rays;
     const Bounds3 bounds = scene.bounds();
     for (size_t i = 0; i < options.shadow; ++i) {
-        const SurfacePoint& sp = points[rng.next_below(static_cast<uint32_t>(points.size()))];
+        const uint32_t k = rng.next_below(static_cast<uint32_t>(points.size()));
+        const SurfacePoint& sp = points[k];
         const Vec3 to = random_point(rng, bounds) - sp.p;
         const float dist = length(to);
         if (!(dist > 0)) continue;
-        rays.push_back({spawn_ray(sp, to / dist, dist, 0), RayKind::Shadow});
+        rays.push_back({spawn_ray(sp, to / dist, dist, times[k]), RayKind::Shadow});
     }
     for (size_t i = 0; i < options.bounce; ++i) {
-        const SurfacePoint& sp = points[rng.next_below(static_cast<uint32_t>(points.size()))];
+        const uint32_t k = rng.next_below(static_cast<uint32_t>(points.size()));
+        const SurfacePoint& sp = points[k];
         const Vec3 w = square_to_uniform_sphere({rng.next_float(), rng.next_float()});
-        rays.push_back(
-            {spawn_ray(sp, w, std::numeric_limits<float>::infinity(), 0), RayKind::Bounce});
+        rays.push_back({spawn_ray(sp, w, std::numeric_limits<float>::infinity(), times[k]),
+                        RayKind::Bounce});
     }
     return rays;
 }
@@ -134,8 +149,9 @@ bool is_grazing(const Scene& scene, const Ray& ray, const Hit& h) {
 }
 
 // Where the ray meets the hit triangle's plane, in double precision from the scene's
-// own float data (vertices through the instance's forward matrix): the reference for
-// judging t, the angle, and whether a point lies inside a triangle.
+// own float data (vertices through the instance's forward matrix, both at the ray's
+// time): the reference for judging t, the angle, and whether a point lies inside a
+// triangle.
 struct ExactHit {
     double t = 0, cos = 1;
     double min_barycentric = 0;  // of the plane point; < 0: outside the triangle
@@ -152,11 +168,12 @@ struct ExactHit {
 
 ExactHit exact_plane_hit(const Scene& scene, const Ray& ray, const Hit& h) {
     const TriangleMesh& mesh = scene.meshes[h.mesh];
-    const Mat4& m = scene.instances[h.instance].to_world.matrix();
+    const Transform xf = instance_transform_at(scene.instances[h.instance], ray.time);
+    const Mat4& m = xf.matrix();
     ExactHit x;
     auto& p = x.p;
     for (int k = 0; k < 3; ++k) {
-        const Vec3 v = mesh.positions[mesh.indices[3 * h.prim + k]];
+        const Vec3 v = position_at(mesh, mesh.indices[3 * h.prim + k], ray.time);
         for (int r = 0; r < 3; ++r)
             p[k][r] =
                 double(m(r, 0)) * v.x + double(m(r, 1)) * v.y + double(m(r, 2)) * v.z + m(r, 3);

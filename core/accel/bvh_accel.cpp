@@ -43,9 +43,14 @@ std::optional<Hit> BvhAccel::do_intersect(const Ray& ray) const {
             const TrianglePrecomp rt(oray);
             Hit h;
             bool here = false;
+            const bool deforms = ob.triangles.deforms();
             traverse_bvh(ob.nodes.empty() ? nullptr : ob.nodes.data(), rb, t_closest,
                          [&](uint32_t first, uint32_t count, float& t) {
-                             here |= ob.triangles.intersect(rt, first, count, oray.tmin, &t, &h);
+                             here |= deforms ? ob.triangles.intersect_at(rt, first, count,
+                                                                         oray.tmin, &t, &h,
+                                                                         oray.time)
+                                             : ob.triangles.intersect(rt, first, count,
+                                                                      oray.tmin, &t, &h);
                              return false;
                          });
             if (here) {
@@ -67,9 +72,12 @@ bool BvhAccel::do_occluded(const Ray& ray) const {
         const RayBoxPrecomp rb(oray);
         const TrianglePrecomp rt(oray);
         float t = t0;
+        const bool deforms = ob.triangles.deforms();
         traverse_bvh(ob.nodes.empty() ? nullptr : ob.nodes.data(), rb, t,
                      [&](uint32_t first, uint32_t count, float& tt) {
-                         hit = ob.triangles.any_hit(rt, first, count, oray.tmin, tt);
+                         hit = deforms ? ob.triangles.any_hit_at(rt, first, count, oray.tmin,
+                                                                 tt, oray.time)
+                                       : ob.triangles.any_hit(rt, first, count, oray.tmin, tt);
                          return hit;
                      });
         return hit;

@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "core/scene/motion.h"
 
 namespace penumbra {
 
@@ -36,7 +37,46 @@ bool memory_callback(void* user, ssize_t bytes, bool) {
     return true;
 }
 
+// Transform motion as quaternion decompositions (motion.h), so that Embree slerps the
+// rotation instead of blending matrices (which would shrink a rotating object).
+void set_transform_steps(RTCGeometry g, const std::vector<Transform>& steps) {
+    const std::vector<QuatDecomposition> ds = decompose_steps(steps);
+    rtcSetGeometryTimeStepCount(g, static_cast<unsigned>(ds.size()));
+    for (size_t k = 0; k < ds.size(); ++k) {
+        const QuatDecomposition& d = ds[k];
+        RTCQuaternionDecomposition qd;
+        rtcInitQuaternionDecomposition(&qd);
+        rtcQuaternionDecompositionSetScale(&qd, d.scale.x, d.scale.y, d.scale.z);
+        rtcQuaternionDecompositionSetSkew(&qd, d.skew.x, d.skew.y, d.skew.z);
+        rtcQuaternionDecompositionSetShift(&qd, d.shift.x, d.shift.y, d.shift.z);
+        rtcQuaternionDecompositionSetQuaternion(&qd, d.r, d.i, d.j, d.k);
+        rtcQuaternionDecompositionSetTranslation(&qd, d.translation.x, d.translation.y,
+                                                 d.translation.z);
+        rtcSetGeometryTransformQuaternion(g, static_cast<unsigned>(k), &qd);
+    }
+}
+
 }  // namespace
+
+Mat4 embree_transform_at(const std::vector<Transform>& steps, float u) {
+    RTCDevice device = rtcNewDevice(nullptr);
+    if (!device) throw InternalError("embree: cannot create device");
+    RTCScene empty = rtcNewScene(device);
+    rtcCommitScene(empty);
+    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(g, empty);
+    set_transform_steps(g, steps);
+    rtcCommitGeometry(g);
+    float xfm[12];
+    rtcGetGeometryTransform(g, u, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+    rtcReleaseGeometry(g);
+    rtcReleaseScene(empty);
+    rtcReleaseDevice(device);
+    Mat4 m = Mat4::identity();
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 3; ++r) m(r, c) = xfm[c * 3 + r];
+    return m;
+}
 
 struct EmbreeAccel::Impl {
     ErrorSink errors;
@@ -86,10 +126,20 @@ EmbreeAccel::EmbreeAccel(const Scene& scene) : m_impl(std::make_unique<Impl>()) 
             const TriangleMesh& mesh = scene.meshes[mesh_index];
             RTCGeometry g = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_TRIANGLE);
             // Embree's own buffers are padded for its 16-byte vertex loads.
-            auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-                g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(Vec3),
-                mesh.positions.size()));
-            std::memcpy(v, mesh.positions.data(), mesh.positions.size() * sizeof(Vec3));
+            auto set_vertices = [&](unsigned slot, const std::vector<Vec3>& p) {
+                auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+                    g, RTC_BUFFER_TYPE_VERTEX, slot, RTC_FORMAT_FLOAT3, sizeof(Vec3), p.size()));
+                std::memcpy(v, p.data(), p.size() * sizeof(Vec3));
+            };
+            if (mesh.motion_positions.empty()) {
+                set_vertices(0, mesh.positions);
+            } else {
+                // Deformation: one vertex buffer per time step; Embree interpolates
+                // linearly between them (motion.h's position_at).
+                const auto steps = static_cast<unsigned>(mesh.motion_positions.size());
+                rtcSetGeometryTimeStepCount(g, steps);
+                for (unsigned k = 0; k < steps; ++k) set_vertices(k, mesh.motion_positions[k]);
+            }
             auto* idx = static_cast<uint32_t*>(
                 rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                         3 * sizeof(uint32_t), mesh.triangle_count()));
@@ -112,11 +162,15 @@ EmbreeAccel::EmbreeAccel(const Scene& scene) : m_impl(std::make_unique<Impl>()) 
         const Instance& inst = scene.instances[ii];
         RTCGeometry g = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_INSTANCE);
         rtcSetGeometryInstancedScene(g, im.object_scenes[inst.object]);
-        float xfm[12];  // 3x4 column-major
-        const Mat4& m = inst.to_world.matrix();
-        for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 3; ++r) xfm[c * 3 + r] = m(r, c);
-        rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+        if (inst.motion.empty()) {
+            float xfm[12];  // 3x4 column-major
+            const Mat4& m = inst.to_world.matrix();
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 3; ++r) xfm[c * 3 + r] = m(r, c);
+            rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+        } else {
+            set_transform_steps(g, inst.motion);
+        }
         rtcCommitGeometry(g);
         rtcAttachGeometryByID(im.top, g, static_cast<unsigned>(ii));
         rtcReleaseGeometry(g);

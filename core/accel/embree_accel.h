@@ -1,5 +1,6 @@
 // Embree 3 traversal: one Embree scene per Object (each TriangleMesh a geometry), and a
 // top-level scene with one instance geometry per Instance. Embree types stay in the .cpp.
+// Moving instances and deforming meshes get Embree time steps; static ones none.
 #pragma once
 
 #include <memory>
@@ -24,5 +25,9 @@ private:
     std::unique_ptr<Impl> m_impl;
     AccelStats m_stats;
 };
+
+// The transform Embree itself computes at time u for an instance with these time steps
+// (rtcGetGeometryTransform), to check motion.h against Embree directly.
+Mat4 embree_transform_at(const std::vector<Transform>& steps, float u);
 
 }  // namespace penumbra

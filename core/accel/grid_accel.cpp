@@ -126,13 +126,18 @@ bool GridAccel::walk(const ObjectGrid& g, const Ray& ray, float* tmax, Hit* hit)
         next_t[a] = boundary_t(a);
     }
     bool found = false;
+    const bool deforms = g.triangles.deforms();
     for (;;) {
         const size_t c = cell[0] + size_t(g.res[0]) * (cell[1] + size_t(g.res[1]) * cell[2]);
         for (uint32_t k = g.cell_start[c]; k < g.cell_start[c + 1]; ++k) {
+            const uint32_t i = g.refs[k];
             if (kAnyHit) {
-                if (g.triangles.any_hit(rt, g.refs[k], 1, ray.tmin, *tmax)) return true;
+                if (deforms ? g.triangles.any_hit_at(rt, i, 1, ray.tmin, *tmax, ray.time)
+                            : g.triangles.any_hit(rt, i, 1, ray.tmin, *tmax))
+                    return true;
             } else {
-                found |= g.triangles.intersect(rt, g.refs[k], 1, ray.tmin, tmax, hit);
+                found |= deforms ? g.triangles.intersect_at(rt, i, 1, ray.tmin, tmax, hit, ray.time)
+                                 : g.triangles.intersect(rt, i, 1, ray.tmin, tmax, hit);
             }
         }
         const int a = next_t[0] < next_t[1] ? (next_t[0] < next_t[2] ? 0 : 2)

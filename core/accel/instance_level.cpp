@@ -39,7 +39,18 @@ InstanceLevel::InstanceLevel(const Scene& scene, const std::vector<Bounds3>& obj
         const Instance& inst = scene.instances[i];
         const Bounds3& ob = object_bounds[inst.object];
         if (ob.empty()) continue;
-        Bounds3 wb = inst.to_world.bounds(ob);
+        Record rec;
+        rec.instance = static_cast<uint32_t>(i);
+        rec.object = inst.object;
+        invert_affine(inst.to_world.matrix(), rec.to_object);
+        Bounds3 wb;
+        if (inst.motion.empty()) {
+            wb = inst.to_world.bounds(ob);
+        } else {
+            rec.motion = static_cast<uint32_t>(m_motion.size());
+            m_motion.push_back(decompose_steps(inst.motion));
+            wb = motion_bounds(m_motion.back(), ob);
+        }
         // The corners are transformed in float: pad the box by a few ulps of its largest
         // coordinate so that rounding cannot cull a hit on the object's own boundary.
         float scale = 0;
@@ -50,15 +61,23 @@ InstanceLevel::InstanceLevel(const Scene& scene, const std::vector<Bounds3>& obj
         wb.hi += pad;
         if (!is_finite(wb.lo) || !is_finite(wb.hi)) continue;
         boxes.push_back(wb);
-        Record rec;
-        invert_affine(inst.to_world.matrix(), rec.to_object);
-        rec.instance = static_cast<uint32_t>(i);
-        rec.object = inst.object;
         records.push_back(rec);
     }
     m_tree = build_bvh(boxes, BvhSplit::Sah);
     m_records.resize(records.size());
     for (size_t i = 0; i < m_tree.order.size(); ++i) m_records[i] = records[m_tree.order[i]];
+}
+
+Ray InstanceLevel::moving_object_ray(const Record& rec, const Ray& ray) const {
+    double m[3][4];
+    invert_affine(motion_matrix_at(m_motion[rec.motion], ray.time), m);
+    Ray r = ray;
+    for (int i = 0; i < 3; ++i) {
+        r.o[i] = static_cast<float>(m[i][0] * ray.o.x + m[i][1] * ray.o.y + m[i][2] * ray.o.z +
+                                    m[i][3]);
+        r.d[i] = static_cast<float>(m[i][0] * ray.d.x + m[i][1] * ray.d.y + m[i][2] * ray.d.z);
+    }
+    return r;
 }
 
 }  // namespace penumbra

@@ -2,12 +2,15 @@
 // world boxes. An instance maps the world ray into its object's space with the inverse
 // of its transform, without renormalizing the direction, so a t found in object space
 // is the world t ("TransformedSurface"); many instances share one object structure.
+// A moving instance's transform is interpolated at ray.time (motion.h, as Embree does)
+// and its box encloses the whole motion.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "core/accel/bvh_traverse.h"
+#include "core/scene/motion.h"
 #include "core/scene/scene.h"
 
 namespace penumbra {
@@ -37,22 +40,29 @@ public:
     }
     size_t size() const { return m_records.size(); }
     size_t memory_bytes() const {
-        return m_tree.nodes.capacity() * sizeof(BvhNode) + m_records.capacity() * sizeof(Record);
+        size_t motion = 0;
+        for (const auto& m : m_motion) motion += m.capacity() * sizeof(QuatDecomposition);
+        return m_tree.nodes.capacity() * sizeof(BvhNode) + m_records.capacity() * sizeof(Record) +
+               motion;
     }
 
 private:
-    // The only place that knows how an instance is placed. Motion will store transform
-    // keyframes here and interpolate them at ray.time (with boxes over the whole motion).
-    // The inverse is kept and applied in double: the object-space ray is then the world
-    // ray rounded once, so hits near edges are decided as the scene's own (float)
-    // forward matrix places the triangles. With a float inverse, on scenes/instances.gltf
-    // this rounding alone put ~1 in 100,000 rays on the other side of an edge.
+    // The only place that knows how an instance is placed. The inverse is kept and
+    // applied in double: the object-space ray is then the world ray rounded once, so hits
+    // near edges are decided as the scene's own (float) forward matrix places the
+    // triangles. With a float inverse, on scenes/instances.gltf this rounding alone put
+    // ~1 in 100,000 rays on the other side of an edge. A moving instance instead keeps
+    // its decomposed time steps; its matrix at ray.time is built in float as Embree
+    // builds it and inverted in double.
+    static constexpr uint32_t kStatic = ~0u;
     struct Record {
-        double to_object[3][4];  // rows of the inverse of the affine part
-        uint32_t instance;       // Scene::instances index
-        uint32_t object;         // Scene::objects index
+        double to_object[3][4];     // static: rows of the inverse of the affine part
+        uint32_t instance;          // Scene::instances index
+        uint32_t object;            // Scene::objects index
+        uint32_t motion = kStatic;  // index into m_motion, or kStatic
     };
-    static Ray object_ray(const Record& rec, const Ray& ray) {
+    Ray object_ray(const Record& rec, const Ray& ray) const {
+        if (rec.motion != kStatic) return moving_object_ray(rec, ray);
         const auto& m = rec.to_object;
         Ray r = ray;
         for (int i = 0; i < 3; ++i) {
@@ -63,8 +73,11 @@ private:
         return r;
     }
 
+    Ray moving_object_ray(const Record& rec, const Ray& ray) const;
+
     BvhTree m_tree;
     std::vector<Record> m_records;  // in the tree's leaf order
+    std::vector<std::vector<QuatDecomposition>> m_motion;
 };
 
 }  // namespace penumbra

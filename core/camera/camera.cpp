@@ -1,5 +1,6 @@
 #include "core/camera/camera.h"
 
+#include "core/camera/moving_camera.h"
 #include "core/camera/orthographic_camera.h"
 #include "core/camera/perspective_camera.h"
 #include "core/camera/thin_lens_camera.h"
@@ -7,6 +8,13 @@
 namespace penumbra {
 
 std::unique_ptr<Camera> make_camera(const CameraDesc& desc, int width, int height) {
+    if (!desc.motion.empty()) {
+        // The same camera in its own frame, moved per sample.
+        CameraDesc local = desc;
+        local.to_world = Transform();
+        local.motion.clear();
+        return std::make_unique<MovingCamera>(make_camera(local, width, height), desc.motion);
+    }
     if (desc.type == ProjectionType::Orthographic) {
         // Keep the vertical extent; the horizontal one follows the image so that pixels
         // stay square even when the file's xmag/ymag ratio differs from the image's.

@@ -1,12 +1,20 @@
 #include "core/scene/scene.h"
 
+#include "core/scene/motion.h"
+
 namespace penumbra {
 
 Bounds3 Scene::bounds() const {
     Bounds3 b;
-    for (const Instance& inst : instances) b.expand(inst.to_world.bounds(objects[inst.object].bounds));
+    for (const Instance& inst : instances) {
+        const Bounds3& ob = objects[inst.object].bounds;
+        b.expand(inst.motion.empty() ? inst.to_world.bounds(ob)
+                                     : motion_bounds(decompose_steps(inst.motion), ob));
+    }
     return b;
 }
+
+bool Scene::has_motion() const { return scene_has_motion(*this); }
 
 size_t Scene::triangle_count() const {
     size_t n = 0;

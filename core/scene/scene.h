@@ -98,8 +98,10 @@ struct Scene {
     // Equal for a still (the default: both 0, the scene as its nodes place it).
     double shutter_open = 0, shutter_close = 0;
 
-    // World-space bounds of all instances.
+    // World-space bounds of all instances, over the whole shutter for moving ones.
     Bounds3 bounds() const;
+    // Whether any instance, mesh or camera has time steps (motion.h).
+    bool has_motion() const;
     size_t triangle_count() const;  // counting each instance's triangles
     const MaterialDesc& material(int index) const;
 };
