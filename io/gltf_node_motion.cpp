@@ -131,7 +131,8 @@ int NodeMotion::steps(const std::vector<const AnimationCurve*>& curves) const {
         for (size_t k = first; k <= last && k + 1 < t.size(); ++k)
             shortest = std::min(shortest, t[k + 1] - t[k]);
         const double per_interval = c->interpolation == Interpolation::CubicSpline ? 4 : 1;
-        segments = std::max(segments, std::ceil(duration * per_interval / shortest - 1e-9));
+        // Key times are floats: 0.1f steps are not exactly 0.1 apart, hence the margin.
+        segments = std::max(segments, std::ceil(duration * per_interval / shortest * (1 - 1e-6)));
         if (c->quaternion) {
             // The angle swept inside the shutter: through every key inside it (slerp is
             // exact between keys) and 16 points across it for CUBICSPLINE.
@@ -146,7 +147,7 @@ int NodeMotion::steps(const std::vector<const AnimationCurve*>& curves) const {
         }
     }
     if (segments == 0) return 1;
-    segments = std::max(segments, std::ceil(angle / kMaxStepRotation - 1e-9));
+    segments = std::max(segments, std::ceil(angle / kMaxStepRotation * (1 - 1e-6)));
     return int(std::min<double>(segments, kMaxTimeSteps - 1)) + 1;
 }
 
