@@ -27,7 +27,8 @@ public:
         static const char* const kKeys[] = {
             "scene",  "camera", "integrator", "strategy", "sampler", "filter",  "accel",
             "output", "out_dir", "name",      "frames",   "width",   "height",  "max_depth",
-            "frame",  "spp",    "seed",       "time",     "time_limit", "fps"};
+            "frame",  "spp",    "seed",       "time",     "time_limit", "fps",
+            "shutter", "shutter_open", "shutter_close"};
         for (const auto& [key, value] : m_object.items()) {
             bool known = false;
             for (const char* k : kKeys) known = known || key == k;
@@ -67,6 +68,11 @@ public:
         number("time", s.time, false);
         number("time_limit", s.time_limit, true);
         number("fps", s.fps, true);
+        number("shutter_open", s.shutter_open, false);
+        number("shutter_close", s.shutter_close, false);
+        number("shutter", s.shutter, false);
+        if (s.shutter && !(*s.shutter >= 0 && *s.shutter <= 1))
+            fail("shutter", "expected a fraction of a frame in [0, 1]");
     }
 
     [[noreturn]] void fail(const std::string& key, const std::string& what) const {

@@ -18,7 +18,9 @@ struct JobSettings {
     std::optional<int> width, height, max_depth, frame;
     std::optional<uint32_t> spp;
     std::optional<uint64_t> seed;
-    std::optional<double> time, time_limit, fps;
+    // Timeline: time (an instant), shutter_open + shutter_close (seconds), or frame /
+    // frames with fps and shutter (a fraction of a frame); see io/timeline.h.
+    std::optional<double> time, time_limit, fps, shutter, shutter_open, shutter_close;
 };
 
 struct JobEntry {

@@ -37,18 +37,21 @@ void apply(const JobSettings& s, RenderCommandOptions& o) {
     if (s.spp) o.spp = *s.spp;
     if (s.seed) o.seed = *s.seed;
     if (s.time_limit) o.time_limit = *s.time_limit;
-    if (s.fps) o.fps = *s.fps;
-    // A single frame or time replaces an inherited frame range, and the other way round.
-    if (s.frames) {
-        o.frames = *s.frames;
-        o.frame = -1;
-    }
-    if (s.frame) {
-        o.frames = std::to_string(*s.frame);
-    } else if (s.time) {
+    if (s.fps) o.timeline.fps = *s.fps;
+    if (s.shutter) o.timeline.shutter = *s.shutter;
+    // A frame, frame range, time or shutter interval replaces the timing it inherits.
+    if (s.frames || s.frame || s.time || s.shutter_open || s.shutter_close) {
         o.frames.clear();
-        o.time = *s.time;
+        o.timeline.frame.reset();
+        o.timeline.time.reset();
+        o.timeline.shutter_open.reset();
+        o.timeline.shutter_close.reset();
     }
+    if (s.frames) o.frames = *s.frames;
+    if (s.frame) o.frames = std::to_string(*s.frame);
+    if (s.time) o.timeline.time = *s.time;
+    if (s.shutter_open) o.timeline.shutter_open = *s.shutter_open;
+    if (s.shutter_close) o.timeline.shutter_close = *s.shutter_close;
 }
 
 // Option values the command line checks with CLI11 but a job file can spell freely.
@@ -62,6 +65,12 @@ void validate(const RenderCommandOptions& o, const std::string& where) {
         for (const auto& [name, desc] : integrator_names()) known = known || name == o.integrator;
         if (!known) throw std::invalid_argument("unknown integrator '" + o.integrator + "'");
         expand_output_name(o.output.empty() ? o.name : o.output, {});
+        TimelineSettings timeline = o.timeline;
+        if (!o.frames.empty()) {
+            if (timeline.frame) throw std::invalid_argument("--frame conflicts with --frames");
+            timeline.frame = 0;  // each frame of the list is checked the same way
+        }
+        resolve_shutter(timeline);
     } catch (const std::invalid_argument& e) {
         throw SceneError(where + ": " + e.what());
     }
@@ -75,7 +84,6 @@ void add_jobs(const std::string& scene, const RenderCommandOptions& o, const std
         job.options.name = o.frames.empty() ? "{scene}.exr" : "{scene}_{frame}.exr";
     validate(job.options, where.empty() ? "options" : where);
     if (o.frames.empty()) {
-        job.options.frame = -1;
         jobs.push_back(job);
         return;
     }
@@ -86,8 +94,7 @@ void add_jobs(const std::string& scene, const RenderCommandOptions& o, const std
         throw SceneError((where.empty() ? std::string("--frames") : where) + ": " + e.what());
     }
     for (int f : frames) {
-        job.options.frame = f;
-        job.options.time = f / o.fps;
+        job.options.timeline.frame = f;
         jobs.push_back(job);
     }
 }
@@ -126,8 +133,10 @@ std::string output_path(const BatchJob& job, const std::string& camera) {
     OutputNameFields fields;
     fields.scene = fs::path(job.scene).stem().string();
     fields.camera = camera;
-    // A still image's {frame} is the frame its time falls on.
-    fields.frame = o.frame >= 0 ? o.frame : static_cast<int>(std::lround(o.time * o.fps));
+    // Without a frame, {frame} is the frame the shutter opens on.
+    const TimelineSettings& t = o.timeline;
+    fields.frame = t.frame ? *t.frame
+                           : static_cast<int>(std::lround(resolve_shutter(t).open * t.fps));
     fields.index = job.index;
     if (!o.output.empty()) return expand_output_name(o.output, fields);
     return (fs::path(o.out_dir) / expand_output_name(o.name, fields)).string();

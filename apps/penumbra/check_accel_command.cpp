@@ -1,5 +1,7 @@
 #include "apps/penumbra/check_accel_command.h"
 
+#include "apps/penumbra/timeline_options.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -13,6 +15,7 @@
 #include "core/accel/accel_check.h"
 #include "core/camera/default_camera.h"
 #include "core/lights/light_set.h"
+#include "core/error.h"
 #include "core/log.h"
 #include "core/progress.h"
 #include "integrators/render.h"
@@ -46,6 +49,7 @@ void add_check_accel_command(CLI::App& app, CheckAccelOptions& o) {
     cmd->add_option("--spp", o.spp, "Samples per pixel for --images")
         ->capture_default_str()
         ->check(CLI::Range(1u, 1u << 16));
+    add_timeline_options(cmd, o.timeline, false);
 }
 
 namespace {
@@ -152,7 +156,15 @@ void compare_images(const Scene& scene, const CameraDesc& cam_desc, int width, i
 
 int run_check_accel_command(const CheckAccelOptions& o) {
     set_log_level(LogLevel::Warning);
-    const Scene scene = load_gltf(o.scene);
+    GltfLoadOptions load;
+    try {
+        const ShutterInterval shutter = resolve_shutter(o.timeline);
+        load.shutter_open = shutter.open;
+        load.shutter_close = shutter.close;
+    } catch (const std::invalid_argument& e) {
+        throw SceneError(o.scene + ": " + e.what());
+    }
+    const Scene scene = load_gltf(o.scene, load);
     const CameraDesc cam_desc =
         scene.cameras.empty() ? default_camera(scene.bounds(), 1.0f) : scene.cameras[0];
     const float aspect = cam_desc.aspect_ratio > 0 ? cam_desc.aspect_ratio

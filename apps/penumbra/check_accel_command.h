@@ -6,6 +6,8 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "io/timeline.h"
+
 namespace penumbra {
 
 struct CheckAccelOptions {
@@ -16,6 +18,7 @@ struct CheckAccelOptions {
     int width = 256;          // camera rays: one per pixel; also the --images size
     bool images = false;
     unsigned spp = 4;  // --images
+    TimelineSettings timeline;  // --time, --shutter-open/-close, --frame/--fps/--shutter
 };
 
 void add_check_accel_command(CLI::App& app, CheckAccelOptions& options);

@@ -10,6 +10,7 @@
 #include "apps/penumbra/interrupt.h"
 #include "apps/penumbra/output_options.h"
 #include "apps/penumbra/scene_setup.h"
+#include "apps/penumbra/timeline_options.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/progress.h"
@@ -42,12 +43,9 @@ void add_render_command(CLI::App& app, RenderCommandOptions& o) {
                     "see README")
         ->check(CLI::ExistingFile);
     cmd->add_option("--frames", o.frames,
-                    "Render these frames (e.g. 1-48, 1-48:2, 1,5,10-12) at time frame/fps, one "
-                    "image each. Animation is not evaluated yet: a static scene gives the same "
-                    "image for every frame");
-    cmd->add_option("--fps", o.fps, "Frames per second for --frames")
-        ->capture_default_str()
-        ->check(CLI::PositiveNumber);
+                    "Render these frames (e.g. 1-48, 1-48:2, 1,5,10-12), one image each, the "
+                    "shutter opening at frame/fps (for --shutter of a frame)");
+    add_timeline_options(cmd, o.timeline, true);
     cmd->add_option("--time-limit", o.time_limit,
                     "Seconds per image: render passes until the time is up or --spp is "
                     "reached; the EXR records the samples done")
@@ -107,7 +105,7 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
     const std::string& output = result.output;
 
     RenderOptions ropt = render_options_for(o, fs::path(path).filename().string());
-    if (o.frame >= 0) ropt.label += " frame " + std::to_string(o.frame);
+    if (o.timeline.frame) ropt.label += " frame " + std::to_string(*o.timeline.frame);
     ropt.interrupts = &state.interrupts;
     ropt.batch = &state.progress;
     RenderStats stats;
@@ -138,11 +136,15 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
         {"penumbra:spp_requested", std::to_string(o.spp)},
         {"penumbra:partial", stats.interrupted ? "1" : "0"},
         {"penumbra:seed", std::to_string(o.seed)},
-        {"penumbra:time", std::to_string(o.time)},
+        // The exposure in animation seconds; equal for a still (time is its opening).
+        {"penumbra:time", std::to_string(setup->scene.shutter_open)},
+        {"penumbra:shutter_open", std::to_string(setup->scene.shutter_open)},
+        {"penumbra:shutter_close", std::to_string(setup->scene.shutter_close)},
         {"penumbra:rays", std::to_string(stats.rays)},
         {"penumbra:nonfinite_samples", std::to_string(stats.nonfinite_samples)},
     };
-    if (o.frame >= 0) metadata.push_back({"penumbra:frame", std::to_string(o.frame)});
+    if (o.timeline.frame)
+        metadata.push_back({"penumbra:frame", std::to_string(*o.timeline.frame)});
     if (o.time_limit > 0)
         metadata.push_back({"penumbra:time_limit", std::to_string(o.time_limit)});
     // Timing differs from run to run, so it is opt-in: by default the same command
@@ -207,7 +209,7 @@ int run_render_command(const RenderCommandOptions& o) {
     for (const BatchJob& job : jobs) {
         JobResult r;
         r.scene = job.scene;
-        r.frame = job.options.frame;
+        r.frame = job.options.timeline.frame.value_or(-1);
         if (interrupt.signals() > 0) {
             r.status = JobStatus::Skipped;
             r.message = "interrupted before it started";

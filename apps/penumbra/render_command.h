@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "io/color.h"
+#include "io/timeline.h"
 
 namespace penumbra {
 
@@ -18,9 +19,9 @@ struct RenderCommandOptions {
     std::string name;     // --name template in out_dir; empty: {scene}.exr ({scene}_{frame})
     std::string job_file;              // --job: JSON batch description
     std::string frames;                // --frames "1-48", "3", "1,5,10-12"
-    double fps = 24;
-    double time = 0;        // scene time in seconds (a job's "time", or frame / fps)
-    int frame = -1;         // the frame being rendered; -1: none
+    // --time, --shutter-open/--shutter-close, --frame/--fps/--shutter; a batch sets
+    // `frame` for each of --frames.
+    TimelineSettings timeline;
     double time_limit = 0;  // seconds per image; 0: none
     bool overwrite = false; // re-render images whose complete output exists
     bool no_preview = false;

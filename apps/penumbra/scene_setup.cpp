@@ -208,6 +208,13 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     auto t0 = Clock::now();
     GltfLoadOptions load;
     load.rec709_to_working = s->color->rec709_to_working();
+    try {
+        const ShutterInterval shutter = resolve_shutter(o.timeline);
+        load.shutter_open = shutter.open;
+        load.shutter_close = shutter.close;
+    } catch (const std::invalid_argument& e) {
+        throw SceneError(path + ": " + e.what());
+    }
     s->scene = load_gltf(path, load);
     s->load_seconds = since(t0);
     Scene& scene = s->scene;
@@ -265,7 +272,7 @@ RenderOptions render_options_for(const RenderCommandOptions& o, const std::strin
     r.filter = o.filter;
     r.progress = !o.quiet;
     r.label = label;
-    r.time = o.time;
+    r.time = resolve_shutter(o.timeline).open;
     r.time_limit = o.time_limit;
     r.aovs = parse_aovs(o.aovs);
     return r;

@@ -70,6 +70,23 @@ TEST(JobFile, ErrorsNameTheFileAndElement) {
     EXPECT_EQ(message(R"({"job": []})"), "j.json: unknown key 'job' (expected defaults, jobs)");
 }
 
+TEST(JobFile, ShutterKeys) {
+    const JobFile f = parse_job_file(
+        R"({"defaults": {"shutter": 0.5, "fps": 30},
+            "jobs": [{"scene": "a.gltf", "shutter_open": 1.25, "shutter_close": 1.5}]})",
+        "j.json");
+    EXPECT_EQ(f.defaults.shutter, 0.5);
+    EXPECT_EQ(f.jobs[0].settings.shutter_open, 1.25);
+    EXPECT_EQ(f.jobs[0].settings.shutter_close, 1.5);
+    try {
+        parse_job_file(R"({"jobs": [{"scene": "a.gltf", "shutter": 2}]})", "j.json");
+        FAIL() << "no error";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "j.json: jobs[0].shutter: expected a fraction of a frame in [0, 1]");
+    }
+}
+
 TEST(JobFile, FrameLists) {
     EXPECT_EQ(parse_frame_list("7"), std::vector<int>({7}));
     EXPECT_EQ(parse_frame_list("1-4"), std::vector<int>({1, 2, 3, 4}));
