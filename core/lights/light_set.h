@@ -1,5 +1,5 @@
 // Every light a render uses: the scene's punctual lights, one TriangleLight per emissive
-// triangle of every instance, and the environment. Chooses lights in proportion to their
+// triangle of every instance that does not move within the shutter, and the environment. Chooses lights in proportion to their
 // power with an alias table (PBRT's PowerLightSampler), and maps an emissive hit back
 // to its light for MIS.
 #pragma once
