@@ -175,8 +175,12 @@ std::vector<T> read_all(const GltfContext& ctx, int index, Convert convert) {
     const size_t csize = size_t(component_size(a.componentType));
     if (n == 0) ctx.fail(user, "unknown type " + std::to_string(a.type));
     if (csize == 0) ctx.fail(user, "unknown componentType " + std::to_string(a.componentType));
-    if (a.type == TINYGLTF_TYPE_MAT2 || a.type == TINYGLTF_TYPE_MAT3 ||
-        a.type == TINYGLTF_TYPE_MAT4)
+    // Columns of 1- and 2-byte matrices are padded to 4 bytes (glTF 2.0, section
+    // 3.6.2.4); float MAT4 (skins' inverseBindMatrices) has no padding and reads as 16
+    // floats per element.
+    if ((a.type == TINYGLTF_TYPE_MAT2 || a.type == TINYGLTF_TYPE_MAT3 ||
+         a.type == TINYGLTF_TYPE_MAT4) &&
+        !(a.type == TINYGLTF_TYPE_MAT4 && a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT))
         ctx.fail(user, "matrix accessors are not supported here");
 
     std::vector<T> out;

@@ -41,9 +41,18 @@ inline std::string element(const char* array, size_t i) {
     return std::string(array) + "[" + std::to_string(i) + "]";
 }
 
+// Where a Scene::meshes entry came from: its glTF mesh and primitive and, when its
+// vertices were split per triangle for flat shading (and skins or morph targets need the
+// file's vertices), the file vertex of each of its vertices.
+struct MeshOrigin {
+    int mesh = -1, primitive = -1;
+    std::vector<uint32_t> source_vertex;  // empty: vertex i is the file's vertex i
+};
+
 // Each glTF mesh becomes Scene::objects[i] (same index), with one TriangleMesh per
-// triangle primitive appended to Scene::meshes (gltf_mesh.cpp).
-void load_meshes(const GltfContext& ctx, Scene& scene);
+// triangle primitive appended to Scene::meshes (gltf_mesh.cpp), and its origin to
+// `origins` (same index).
+void load_meshes(const GltfContext& ctx, Scene& scene, std::vector<MeshOrigin>& origins);
 
 // Materials, and the textures and images they use, decoded with OIIO
 // (gltf_material.cpp). Only images that a material references are decoded.
@@ -54,6 +63,7 @@ class NodeMotion;
 // Instances, cameras and lights of glTF scene `scene_index` (gltf_nodes.cpp), posed at
 // shutter open, with time steps for what moves within the shutter (`motion`); needs the
 // objects from load_meshes.
-void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motion, Scene& scene);
+void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motion,
+                const std::vector<MeshOrigin>& origins, Scene& scene);
 
 }  // namespace penumbra

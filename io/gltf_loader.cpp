@@ -172,14 +172,15 @@ Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
     scene.source = path;
     scene.shutter_open = shutter.open;
     scene.shutter_close = shutter.close;
-    load_meshes(ctx, scene);
+    std::vector<MeshOrigin> origins;
+    load_meshes(ctx, scene, origins);
     load_materials(ctx, scene);
     convert_scene_colors(scene, options.rec709_to_working);
     const GltfAnimations animations(ctx);
     const NodeMotion motion(ctx, animations, shutter);
     const int scene_index = choose_scene(ctx, options.scene);
     if (scene_index >= 0)
-        load_nodes(ctx, scene_index, motion, scene);
+        load_nodes(ctx, scene_index, motion, origins, scene);
     else
         ctx.warn("scenes", "the file defines no scene; nothing will be rendered");
     return scene;

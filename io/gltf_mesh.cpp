@@ -150,7 +150,7 @@ std::vector<Vec3> to_vec3(const std::vector<float>& v) {
 // One triangle primitive; false when it has no triangles to render (skipped, with a
 // warning).
 bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, const std::string& el,
-                     TriangleMesh& mesh) {
+                     TriangleMesh& mesh, MeshOrigin& origin) {
     const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
     if (mode < TINYGLTF_MODE_POINTS || mode > TINYGLTF_MODE_TRIANGLE_FAN)
         ctx.fail(el, "mode " + std::to_string(mode) + " is not a glTF primitive mode");
@@ -220,14 +220,19 @@ bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, co
         ctx.warn(el, "has no triangles; skipped");
         return false;
     }
-    if (mesh.normals.empty()) make_flat(mesh);
+    if (mesh.normals.empty()) {
+        // Skins and morph targets address the file's vertices, which make_flat splits.
+        if (!prim.targets.empty() || prim.attributes.count("JOINTS_0"))
+            origin.source_vertex = mesh.indices;
+        make_flat(mesh);
+    }
     for (const Vec3& p : mesh.positions) mesh.bounds.expand(p);
     return true;
 }
 
 }  // namespace
 
-void load_meshes(const GltfContext& ctx, Scene& scene) {
+void load_meshes(const GltfContext& ctx, Scene& scene, std::vector<MeshOrigin>& origins) {
     const tinygltf::Model& m = ctx.model;
     for (size_t i = 0; i < m.meshes.size(); ++i) {
         const tinygltf::Mesh& gm = m.meshes[i];
@@ -236,10 +241,9 @@ void load_meshes(const GltfContext& ctx, Scene& scene) {
         for (size_t j = 0; j < gm.primitives.size(); ++j) {
             const std::string el = element("meshes", i) + "." + element("primitives", j);
             const tinygltf::Primitive& prim = gm.primitives[j];
-            if (!prim.targets.empty())
-                ctx.warn_once("meshes", "morph targets are ignored (meshes keep their base shape)");
             TriangleMesh mesh;
-            if (!build_primitive(ctx, prim, el, mesh)) continue;
+            MeshOrigin origin{int(i), int(j), {}};
+            if (!build_primitive(ctx, prim, el, mesh, origin)) continue;
             if (gm.name.empty())
                 mesh.name = el;
             else if (gm.primitives.size() == 1)
@@ -249,6 +253,7 @@ void load_meshes(const GltfContext& ctx, Scene& scene) {
             object.bounds.expand(mesh.bounds);
             object.meshes.push_back(uint32_t(scene.meshes.size()));
             scene.meshes.push_back(std::move(mesh));
+            origins.push_back(std::move(origin));
         }
         scene.objects.push_back(std::move(object));
     }

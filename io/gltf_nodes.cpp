@@ -12,6 +12,7 @@
 #include "core/lights/spot_light.h"
 #include "core/camera/thin_lens_camera.h"
 #include "io/gltf_context.h"
+#include "io/gltf_deform.h"
 #include "io/gltf_instancing.h"
 #include "io/gltf_node_motion.h"
 
@@ -193,7 +194,8 @@ std::unique_ptr<Light> make_light(const GltfContext& ctx, const LightNode& ln, f
 
 }  // namespace
 
-void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motion, Scene& scene) {
+void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motion,
+                const std::vector<MeshOrigin>& origins, Scene& scene) {
     const tinygltf::Model& m = ctx.model;
     const std::string sel = element("scenes", size_t(scene_index));
     std::vector<bool> visited(m.nodes.size(), false);
@@ -235,12 +237,21 @@ void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motio
         }
         if (node.mesh != -1) {
             ctx.check_index(el, "mesh", node.mesh, m.meshes.size(), "meshes");
+            const std::optional<DeformedObject> deformed =
+                scene.objects[size_t(node.mesh)].meshes.empty()
+                    ? std::nullopt
+                    : add_deformed_object(ctx, motion, index, origins, scene);
+            if (deformed && node.extensions.count("EXT_mesh_gpu_instancing"))
+                ctx.warn(el, "EXT_mesh_gpu_instancing on a skinned or morphed mesh: one "
+                             "deformed copy is drawn, at the node");
             if (!scene.objects[size_t(node.mesh)].meshes.empty() &&
-                !add_gpu_instances(ctx, el, node, index, world, steps, scene)) {
+                (deformed || !add_gpu_instances(ctx, el, node, index, world, steps, scene))) {
                 Instance inst;
-                inst.object = uint32_t(node.mesh);
-                inst.to_world = world;
-                inst.motion = std::move(steps);
+                inst.object = deformed ? deformed->object : uint32_t(node.mesh);
+                // A skinned mesh is already in world space; its node's motion is ignored.
+                const bool world_space = deformed && deformed->world_space;
+                inst.to_world = world_space ? Transform() : world;
+                if (!world_space) inst.motion = steps;
                 inst.node = index;
                 inst.name = node.name.empty() ? el : node.name;
                 scene.instances.push_back(std::move(inst));

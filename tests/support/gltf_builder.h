@@ -65,7 +65,8 @@ public:
         const size_t offset = m_buffer.size(), bytes = values.size() * sizeof(T);
         m_buffer.resize(offset + bytes);
         if (bytes) std::memcpy(m_buffer.data() + offset, values.data(), bytes);
-        const int n = type == "SCALAR" ? 1 : type.back() - '0';
+        const int d = type.back() - '0';
+        const int n = type == "SCALAR" ? 1 : type.compare(0, 3, "MAT") == 0 ? d * d : d;
         add_view(offset, bytes);
         return add_accessor(int(m_views.size()) - 1, 0, component_type, type,
                             values.size() / size_t(n), extra);
