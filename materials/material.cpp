@@ -130,6 +130,7 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     p.dielectric_f0 = min(f0, Spectrum(1)) * specular;
     p.dielectric_f90 = specular;
     p.distribution = options.gltf_distribution;
+    p.layering = options.gltf_layering;
     if (transmission == 0 || metallic == 1) {
         sd.bsdf.emplace(MetalRoughBsdf(p));
         return sd;

@@ -47,6 +47,8 @@ struct MaterialOptions {
     // The microfacet distribution of glTF's specular lobes: GGX as the spec says, or
     // Beckmann to compare (--microfacet).
     MicrofacetType gltf_distribution = MicrofacetType::Ggx;
+    // How the diffuse base of dielectrics layers under the specular lobe (--gltf-layering).
+    GltfLayering gltf_layering = GltfLayering::AlbedoScaled;
 };
 
 // wo: unit world direction towards the viewer (-ray.d).

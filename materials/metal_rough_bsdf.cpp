@@ -1,12 +1,43 @@
 #include "materials/metal_rough_bsdf.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/sampling/warp.h"
 #include "materials/fresnel.h"
 
 namespace penumbra {
 
 MetalRoughBsdf::MetalRoughBsdf(const MetalRoughParams& p)
-    : m_p(p), m_dist(p.distribution, p.alpha), m_delta(p.alpha < kDeltaAlpha) {}
+    : m_p(p),
+      m_dist(p.distribution, p.alpha),
+      m_delta(p.alpha < kDeltaAlpha),
+      m_f0_max(max_component(p.dielectric_f0)) {
+    if (m_p.layering != GltfLayering::AlbedoScaled || m_p.metallic >= 1) return;
+    float e_avg;
+    if (m_delta) {
+        // A mirror reflects F(mu) = f0 + (f90 - f0)(1 - mu)^5, whose cosine-weighted
+        // average is f0 + (f90 - f0) 2 int (1 - mu)^5 mu dmu = f0 + (f90 - f0) / 21.
+        e_avg = m_f0_max + (m_p.dielectric_f90 - m_f0_max) / 21;
+    } else {
+        m_albedo = SpecularAlbedo(p.distribution, p.alpha);
+        const Vec2 avg = m_albedo.average();
+        e_avg = m_f0_max * avg.x + (m_p.dielectric_f90 - m_f0_max) * avg.y;
+    }
+    // E_avg reaches 1 only for a lossless mirror layer (f0 = f90 = 1), which leaves
+    // nothing to the base anyway.
+    m_base_norm = e_avg < 1 ? 1 / (1 - e_avg) : 0;
+}
+
+float MetalRoughBsdf::base_transmittance(float mu) const {
+    if (m_p.layering == GltfLayering::Spec || m_delta) {
+        // The spec's 1 - F; for a mirror layer this is also 1 - E, its albedo.
+        const float w = std::pow(1 - std::clamp(mu, 0.0f, 1.0f), 5.0f);
+        return 1 - (m_f0_max + (m_p.dielectric_f90 - m_f0_max) * w);
+    }
+    const Vec2 ab = m_albedo.at(mu);
+    return 1 - (m_f0_max * ab.x + (m_p.dielectric_f90 - m_f0_max) * ab.y);
+}
 
 Spectrum MetalRoughBsdf::specular_fresnel(float c) const {
     const Spectrum fd = fresnel_schlick(m_p.dielectric_f0, m_p.dielectric_f90, c);
@@ -14,17 +45,27 @@ Spectrum MetalRoughBsdf::specular_fresnel(float c) const {
     return fd * (1 - m_p.metallic) + fm * m_p.metallic;
 }
 
-Spectrum MetalRoughBsdf::diffuse_term(float cos_vh) const {
-    // glTF's fresnel_mix: the diffuse base keeps what the dielectric layer transmits.
-    const Spectrum fd = fresnel_schlick(m_p.dielectric_f0, m_p.dielectric_f90, cos_vh);
-    return m_p.base_color * ((1 - m_p.metallic) * (1 - max_component(fd)) * kInvPi);
+Spectrum MetalRoughBsdf::diffuse_term(float cos_o, float cos_i, float cos_vh) const {
+    if (m_p.metallic >= 1) return Spectrum(0);
+    float weight;
+    if (m_p.layering == GltfLayering::Spec) {
+        // glTF's fresnel_mix: the base keeps what the layer transmits at v.h.
+        weight = base_transmittance(cos_vh);
+    } else {
+        // What the layer leaves on the way in and on the way out, normalized so that
+        // the base's cosine-weighted average of the second factor is 1.
+        weight = base_transmittance(cos_o) * base_transmittance(cos_i) * m_base_norm;
+    }
+    return m_p.base_color * ((1 - m_p.metallic) * std::max(0.0f, weight) * kInvPi);
 }
 
 float MetalRoughBsdf::specular_probability(Vec3 wo) const {
     // Lobe weights from the albedo each lobe would have at normal-ish incidence; any
     // positive choice keeps the estimator unbiased, this one keeps variance low.
     const float spec = luminance(specular_fresnel(wo.z));
-    const float diff = luminance(diffuse_term(wo.z)) * kPi;
+    const float diff = m_p.metallic >= 1 ? 0.0f
+                                         : luminance(m_p.base_color) * (1 - m_p.metallic) *
+                                               std::max(0.0f, base_transmittance(wo.z));
     const float total = spec + diff;
     if (!(total > 0)) return 0;
     return std::clamp(spec / total, 0.0f, 1.0f);
@@ -36,7 +77,7 @@ Spectrum MetalRoughBsdf::eval(Vec3 wo, Vec3 wi, Transport) const {
     if (length_squared(h) == 0) return Spectrum(0);
     h = normalize(h);
     const float vh = std::max(0.0f, dot(wo, h));
-    Spectrum f = diffuse_term(vh);
+    Spectrum f = diffuse_term(wo.z, wi.z, vh);
     if (!m_delta) {
         const float spec = m_dist.D(h) * m_dist.G(wo, wi) / (4 * wo.z * wi.z);
         f += specular_fresnel(vh) * spec;

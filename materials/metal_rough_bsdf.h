@@ -1,13 +1,30 @@
 // The glTF 2.0 metallic-roughness BRDF (spec Appendix B, with KHR_materials_specular
 // and _ior): a GGX (or, for comparisons, Beckmann) specular lobe with height-correlated
-// Smith masking and Schlick Fresnel, over a Lambertian base weighted by 1 - F.
-// Roughness 0 makes the specular lobe a perfect mirror.
+// Smith masking and Schlick Fresnel, over a Lambertian base. Roughness 0 makes the
+// specular lobe a perfect mirror.
 #pragma once
 
 #include "materials/bsdf.h"
 #include "materials/microfacet.h"
+#include "materials/specular_albedo.h"
 
 namespace penumbra {
+
+// How the dielectric's Lambertian base sits under its specular layer. The metal and the
+// specular lobe itself are the spec's in both.
+enum class GltfLayering {
+    // Energy-conserving (the default): the base is weighted by
+    //     (1 - E(wo)) (1 - E(wi)) / (1 - E_avg),
+    // E the specular lobe's directional albedo with its Fresnel (specular_albedo.h),
+    // E_avg its cosine-weighted average (Kelemen & Szirmay-Kalos 2001; Kulla & Conty
+    // 2017). Reciprocal, and a white dielectric reflects exactly E(wo) + (1 - E(wo)) = 1.
+    AlbedoScaled,
+    // The spec's fresnel_mix exactly as Appendix B writes it: the base weighted by
+    // 1 - F(v.h). It gains energy away from the normal (a white dielectric reflects
+    // about 1.15 at cos(theta_o) = 0.3 and 1.7 at 0.05), so glTF furnace spheres glow at
+    // their rims. Kept for comparison with rasterizers that follow the appendix.
+    Spec,
+};
 
 struct MetalRoughParams {
     Spectrum base_color{1, 1, 1};
@@ -17,6 +34,7 @@ struct MetalRoughParams {
     float dielectric_f90 = 1;         // specular factor
     // GGX as the spec says; Beckmann to compare (the --microfacet switch).
     MicrofacetType distribution = MicrofacetType::Ggx;
+    GltfLayering layering = GltfLayering::AlbedoScaled;
 };
 
 class MetalRoughBsdf final : public Bsdf {
@@ -34,7 +52,12 @@ public:
 private:
     // Mixed Fresnel of the dielectric and metal layers at cos(theta) = c.
     Spectrum specular_fresnel(float c) const;
-    Spectrum diffuse_term(float cos_vh) const;
+    // The base's BRDF value; cos_vh only matters to the spec's layering.
+    Spectrum diffuse_term(float cos_o, float cos_i, float cos_vh) const;
+    // The fraction of light at cos(theta) = mu that the dielectric's specular layer
+    // leaves to the base: 1 - E(mu) (AlbedoScaled) or 1 - F(mu) (Spec), scalar as the
+    // spec's max_value(F) (KHR_materials_specular).
+    float base_transmittance(float mu) const;
     // Probability of choosing the specular lobe for this wo.
     float specular_probability(Vec3 wo) const;
     float pdf_specular(Vec3 wo, Vec3 wi) const;
@@ -42,6 +65,9 @@ private:
     MetalRoughParams m_p;
     MicrofacetDistribution m_dist;
     bool m_delta;
+    float m_f0_max;           // the largest channel of dielectric_f0
+    SpecularAlbedo m_albedo;  // AlbedoScaled, rough lobes only
+    float m_base_norm = 1;    // AlbedoScaled: 1 / (1 - E_avg)
 };
 
 }  // namespace penumbra

@@ -127,6 +127,7 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
         {"penumbra:integrator", o.integrator},
         {"penumbra:strategy", o.strategy},
         {"penumbra:microfacet", o.microfacet},
+        {"penumbra:gltf_layering", o.gltf_layering},
         {"penumbra:max_depth", std::to_string(o.max_depth)},
         {"penumbra:accelerator", o.accel},
         {"penumbra:sampler", o.sampler},

@@ -33,6 +33,7 @@ struct RenderCommandOptions {
     std::string integrator = "path";
     std::string strategy = "mis";
     std::string microfacet = "ggx";  // glTF specular lobes: ggx | beckmann
+    std::string gltf_layering = "albedo-scaled";  // glTF diffuse base: albedo-scaled | spec
     int light_samples = 1, bsdf_samples = 1;
     std::string env;            // equirectangular image
     std::vector<float> env_color;  // constant environment radiance (r g b)

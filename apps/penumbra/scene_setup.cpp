@@ -65,6 +65,11 @@ void add_image_options(CLI::App* cmd, RenderCommandOptions& o) {
                     "Microfacet distribution of glTF materials: ggx (the spec's) or beckmann")
         ->capture_default_str()
         ->check(CLI::IsMember({"ggx", "beckmann"}));
+    cmd->add_option("--gltf-layering", o.gltf_layering,
+                    "Diffuse base of glTF dielectrics: albedo-scaled (energy-conserving) or "
+                    "spec (Appendix B's fresnel_mix as written; gains energy at grazing angles)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"albedo-scaled", "spec"}));
     cmd->add_option("--light-samples", o.light_samples,
                     "direct: shadow rays per shading point")
         ->capture_default_str()
@@ -260,6 +265,8 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     s->camera = make_camera(s->camera_desc, s->width, s->height);
     s->materials.gltf_distribution =
         o.microfacet == "beckmann" ? MicrofacetType::Beckmann : MicrofacetType::Ggx;
+    s->materials.gltf_layering =
+        o.gltf_layering == "spec" ? GltfLayering::Spec : GltfLayering::AlbedoScaled;
     return s;
 }
 
