@@ -1,16 +1,17 @@
-// Microbenchmarks: sampling warps, BSDF evaluation and sampling, Embree queries and a
-// whole render of the Cornell box. See docs/performance.md for figures and commands.
+// Microbenchmarks: sampling warps, Embree queries and whole renders of the Cornell box
+// and of a textured Khronos model (BSDFs: material_bench.cpp; lights: light_bench.cpp).
+// See docs/performance.md for figures and commands.
 #include <benchmark/benchmark.h>
 
 #include <memory>
 
 #include "core/accel/embree_accel.h"
 #include "core/camera/camera.h"
+#include "core/camera/default_camera.h"
 #include "core/sampling/rng.h"
 #include "core/sampling/warp.h"
 #include "integrators/render.h"
 #include "io/gltf_loader.h"
-#include "materials/metal_rough_bsdf.h"
 
 namespace penumbra {
 namespace {
@@ -21,36 +22,6 @@ void BM_CosineHemisphere(benchmark::State& state) {
         benchmark::DoNotOptimize(square_to_cosine_hemisphere({rng.next_float(), rng.next_float()}));
 }
 BENCHMARK(BM_CosineHemisphere);
-
-MetalRoughBsdf test_bsdf() {
-    MetalRoughParams p;
-    p.base_color = {0.8f, 0.5f, 0.3f};
-    p.metallic = 0.5f;
-    p.alpha = 0.09f;
-    return MetalRoughBsdf(p);
-}
-
-void BM_MetalRoughEval(benchmark::State& state) {
-    const MetalRoughBsdf bsdf = test_bsdf();
-    Rng rng(2);
-    const Vec3 wo = normalize(Vec3(0.3f, 0.2f, 0.9f));
-    for (auto _ : state) {
-        const Vec3 wi = square_to_cosine_hemisphere({rng.next_float(), rng.next_float()});
-        benchmark::DoNotOptimize(bsdf.eval(wo, wi, Transport::Radiance));
-    }
-}
-BENCHMARK(BM_MetalRoughEval);
-
-void BM_MetalRoughSample(benchmark::State& state) {
-    const MetalRoughBsdf bsdf = test_bsdf();
-    Rng rng(3);
-    const Vec3 wo = normalize(Vec3(0.3f, 0.2f, 0.9f));
-    for (auto _ : state)
-        benchmark::DoNotOptimize(bsdf.sample(wo, rng.next_float(),
-                                             {rng.next_float(), rng.next_float()},
-                                             Transport::Radiance));
-}
-BENCHMARK(BM_MetalRoughSample);
 
 const Scene& cornell_box() {
     static const Scene scene = load_gltf(PENUMBRA_SOURCE_DIR "/scenes/cornell-box.gltf");
@@ -72,22 +43,48 @@ void BM_EmbreeIntersectIncoherent(benchmark::State& state) {
 }
 BENCHMARK(BM_EmbreeIntersectIncoherent);
 
+// Renders 128x128 at 4 spp and reports samples/s (items) and rays/s (a counter).
+void render_benchmark(benchmark::State& state, const Scene& scene, const Accel& accel,
+                      const LightSet& lights, const Camera& camera, const std::string& integrator_name,
+                      int threads) {
+    const RenderContext ctx{scene, accel, lights};
+    const auto integrator = make_integrator(integrator_name, {});
+    RenderOptions opt;
+    opt.spp = 4;
+    opt.threads = threads;
+    opt.progress = false;
+    uint64_t rays = 0;
+    for (auto _ : state) {
+        RenderStats stats;
+        benchmark::DoNotOptimize(render(ctx, camera, *integrator, opt, &stats));
+        rays += stats.rays;
+    }
+    state.SetItemsProcessed(state.iterations() * 128 * 128 * 4);
+    state.counters["rays/s"] = benchmark::Counter(double(rays), benchmark::Counter::kIsRate);
+}
+
 // Args: threads, integrator (0 basic, 1 path).
 void BM_RenderCornell(benchmark::State& state) {
     const Scene& scene = cornell_box();
     static const EmbreeAccel accel(scene);
     static const LightSet lights(scene, nullptr);
-    const RenderContext ctx{scene, accel, lights};
     const auto camera = make_camera(scene.cameras[0], 128, 128);
-    const auto integrator = make_integrator(state.range(1) ? "path" : "basic", {});
-    RenderOptions opt;
-    opt.spp = 4;
-    opt.threads = static_cast<int>(state.range(0));
-    opt.progress = false;
-    for (auto _ : state) benchmark::DoNotOptimize(render(ctx, *camera, *integrator, opt));
-    state.SetItemsProcessed(state.iterations() * 128 * 128 * 4);
+    render_benchmark(state, scene, accel, lights, *camera, state.range(1) ? "path" : "basic",
+                     static_cast<int>(state.range(0)));
 }
 BENCHMARK(BM_RenderCornell)->Args({1, 0})->Args({2, 0})->Args({1, 1})->Args({2, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The textured Khronos box (base colour texture, GGX), path traced under a uniform
+// environment of radiance 1 from the default camera. Arg: threads.
+void BM_RenderBoxTextured(benchmark::State& state) {
+    static const Scene scene = load_gltf(PENUMBRA_SHARED_DIR "/scenes/khronos/BoxTextured.gltf");
+    static const EmbreeAccel accel(scene);
+    static const LightSet lights(
+        scene, std::make_unique<EnvironmentLight>(Spectrum(1), length(scene.bounds().diagonal())));
+    const auto camera = make_camera(default_camera(scene.bounds(), 1), 128, 128);
+    render_benchmark(state, scene, accel, lights, *camera, "path", static_cast<int>(state.range(0)));
+}
+BENCHMARK(BM_RenderBoxTextured)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace penumbra
