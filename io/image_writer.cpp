@@ -1,7 +1,6 @@
 #include "io/image_writer.h"
 
 #include <OpenImageIO/imageio.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -11,35 +10,13 @@
 #include <memory>
 
 #include "core/error.h"
+#include "io/atomic_file.h"
 
 namespace penumbra {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// Writes through `write` into a temporary sibling of path, then renames it into place.
-template <typename WriteFn>
-void write_atomically(const std::string& path, WriteFn write) {
-    const fs::path target(path);
-    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    // Keep the extension last: OIIO picks the format from it.
-    const fs::path tmp =
-        dir / (".tmp-" + std::to_string(getpid()) + "-" + target.filename().string());
-    try {
-        write(tmp.string());
-    } catch (...) {
-        fs::remove(tmp, ec);
-        throw;
-    }
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw SceneError(path + ": cannot move the finished file into place: " + ec.message());
-    }
-}
 
 void write_with_oiio(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type,
                      const void* data, const std::string& shown) {
@@ -126,7 +103,7 @@ void write_exr(const std::string& path, const std::vector<ExrLayer>& layers,
                 data[i * nc + offset + c] = layer.image->pixels[i * lc + c];
         offset += size_t(lc);
     }
-    write_atomically(path, [&](const std::string& tmp) {
+    write_file_atomically(path, [&](const std::string& tmp) {
         write_with_oiio(tmp, spec, OIIO::TypeDesc::FLOAT, data.data(), path);
     });
 }
@@ -152,7 +129,7 @@ void write_preview(const std::string& path, const Image& image, const ColorPipel
     std::transform(display_name.begin(), display_name.end(), display_name.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (display_name.find("srgb") != std::string::npos) spec.attribute("oiio:ColorSpace", "sRGB");
-    write_atomically(path, [&](const std::string& tmp) {
+    write_file_atomically(path, [&](const std::string& tmp) {
         write_with_oiio(tmp, spec, OIIO::TypeDesc::UINT8, bytes.data(), path);
     });
 }

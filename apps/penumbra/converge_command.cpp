@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "apps/penumbra/scene_setup.h"
@@ -12,8 +11,9 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/progress.h"
-#include "io/render_writer.h"
+#include "io/atomic_file.h"
 #include "io/image_writer.h"
+#include "io/render_writer.h"
 
 namespace penumbra {
 
@@ -188,12 +188,6 @@ std::vector<Checkpoint> measure(const ConvergeOptions& o, const Config& c, const
     return points;
 }
 
-void write_text(const fs::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    if (!out.good()) throw SceneError(path.string() + ": cannot write");
-}
-
 std::string fmt(const char* format, double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, format, v);
@@ -273,11 +267,11 @@ int run_converge_command(const ConvergeOptions& o) {
         "last checkpoint per configuration; slope: least-squares fit of log(MSE) against "
         "log(spp)\n" + table;
     const fs::path dir(o.out_dir);
-    write_text(dir / "convergence.csv", csv);
-    write_text(dir / "convergence.svg",
-               log_log_plot_svg(series, {"Convergence: " + fs::path(o.scene).filename().string(),
-                                         "render time (s, " + o.clock + " clock)", "relMSE"}));
-    write_text(dir / "summary.txt", summary);
+    write_text_file((dir / "convergence.csv").string(), csv);
+    write_text_file((dir / "convergence.svg").string(),
+                    log_log_plot_svg(series, {"Convergence: " + fs::path(o.scene).filename().string(),
+                                              "render time (s, " + o.clock + " clock)", "relMSE"}));
+    write_text_file((dir / "summary.txt").string(), summary);
     std::printf("%s", summary.c_str());
     std::printf("wrote %s, %s, %s\n", (dir / "convergence.csv").c_str(),
                 (dir / "convergence.svg").c_str(), (dir / "summary.txt").c_str());
