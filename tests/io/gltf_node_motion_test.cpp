@@ -185,3 +185,24 @@ TEST(GltfNodeMotion, StepsFollowTheKeysInsideTheShutter) {
 
 }  // namespace
 }  // namespace penumbra
+
+namespace penumbra {
+namespace {
+
+// scenes/motion-blur.gltf over [0.5, 1] s (scenes/README.md): the bar turns 90 degrees
+// (10 steps), the cube slides inside one key interval (2 steps), the camera eases
+// (CUBICSPLINE: 4 steps per 2 s interval, 1 inside half a second), the sphere deforms.
+TEST(GltfNodeMotion, MotionBlurSceneStepsAsDocumented) {
+    const Scene s = load_at(test::source_path("scenes/motion-blur.gltf"), 0.5, 1);
+    EXPECT_TRUE(by_node(s, 1).motion.empty()) << "floor";
+    EXPECT_EQ(by_node(s, 2).motion.size(), 2u) << "cube";
+    EXPECT_EQ(by_node(s, 3).motion.size(), 10u) << "bar";
+    ASSERT_EQ(s.cameras.size(), 1u);
+    EXPECT_EQ(s.cameras[0].motion.size(), 2u);
+    const Object& sphere = s.objects[by_node(s, 4).object];
+    EXPECT_EQ(s.meshes[sphere.meshes[0]].motion_positions.size(), 2u);
+    expect_near(by_node(s, 2).motion[1].point({0, 0, 0}), {0, 0.5f, 0.8f}, 1e-5f, "cube");
+}
+
+}  // namespace
+}  // namespace penumbra
