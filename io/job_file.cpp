@@ -28,7 +28,8 @@ public:
             "scene",  "camera", "integrator", "strategy", "sampler", "filter",  "accel",
             "output", "out_dir", "name",      "frames",   "width",   "height",  "max_depth",
             "frame",  "spp",    "seed",       "time",     "time_limit", "fps",
-            "shutter", "shutter_open", "shutter_close"};
+            "shutter", "shutter_open", "shutter_close", "ocio_config", "working_space",
+            "output_colorspace", "display", "view", "look", "aov", "half", "compression"};
         for (const auto& [key, value] : m_object.items()) {
             bool known = false;
             for (const char* k : kKeys) known = known || key == k;
@@ -73,6 +74,22 @@ public:
         number("shutter", s.shutter, false);
         if (s.shutter && !(*s.shutter >= 0 && *s.shutter <= 1))
             fail("shutter", "expected a fraction of a frame in [0, 1]");
+        // "builtin" names the built-in config, not a file next to the job file.
+        if (m_object.contains("ocio_config") && m_object["ocio_config"] == "builtin")
+            text("ocio_config", s.ocio_config);
+        else
+            path("ocio_config", s.ocio_config);
+        text("working_space", s.working_space);
+        text("output_colorspace", s.output_colorspace);
+        text("display", s.display);
+        text("view", s.view);
+        text("look", s.look);
+        text("aov", s.aov);
+        text("compression", s.compression);
+        if (m_object.contains("half")) {
+            if (!m_object["half"].is_boolean()) fail("half", "expected true or false");
+            s.half = m_object["half"].get<bool>();
+        }
     }
 
     [[noreturn]] void fail(const std::string& key, const std::string& what) const {

@@ -21,6 +21,11 @@ struct JobSettings {
     // Timeline: time (an instant), shutter_open + shutter_close (seconds), or frame /
     // frames with fps and shutter (a fraction of a frame); see io/timeline.h.
     std::optional<double> time, time_limit, fps, shutter, shutter_open, shutter_close;
+    // Colour and EXR output, as the command line's --ocio-config, --working-space,
+    // --output-colorspace, --display, --view, --look, --aov, --half, --compression.
+    std::optional<std::string> ocio_config, working_space, output_colorspace, display, view,
+        look, aov, compression;
+    std::optional<bool> half;
 };
 
 struct JobEntry {

@@ -8,10 +8,12 @@
 
 #include "core/accel/accel.h"
 #include "core/error.h"
+#include "core/film/aov.h"
 #include "core/film/filter.h"
 #include "core/progress.h"
 #include "core/sampling/sampler.h"
 #include "integrators/integrator.h"
+#include "io/image_writer.h"
 #include "io/job_file.h"
 #include "io/render_output.h"
 
@@ -52,6 +54,15 @@ void apply(const JobSettings& s, RenderCommandOptions& o) {
     if (s.time) o.timeline.time = *s.time;
     if (s.shutter_open) o.timeline.shutter_open = *s.shutter_open;
     if (s.shutter_close) o.timeline.shutter_close = *s.shutter_close;
+    if (s.ocio_config) o.color.config = *s.ocio_config;
+    if (s.working_space) o.color.working_space = *s.working_space;
+    if (s.output_colorspace) o.color.output_space = *s.output_colorspace;
+    if (s.display) o.color.display = *s.display;
+    if (s.view) o.color.view = *s.view;
+    if (s.look) o.color.look = *s.look;
+    if (s.aov) o.aovs = *s.aov;
+    if (s.half) o.half = *s.half;
+    if (s.compression) o.compression = *s.compression;
 }
 
 // Option values the command line checks with CLI11 but a job file can spell freely.
@@ -71,6 +82,10 @@ void validate(const RenderCommandOptions& o, const std::string& where) {
             timeline.frame = 0;  // each frame of the list is checked the same way
         }
         resolve_shutter(timeline);
+        parse_aovs(o.aovs);
+        const auto& kinds = exr_compressions();
+        if (std::find(kinds.begin(), kinds.end(), o.compression) == kinds.end())
+            throw std::invalid_argument("unknown EXR compression '" + o.compression + "'");
     } catch (const std::invalid_argument& e) {
         throw SceneError(where + ": " + e.what());
     }

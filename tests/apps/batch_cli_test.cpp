@@ -187,6 +187,44 @@ TEST(BatchCli, JobFileEntriesOverrideItsDefaultsWhichOverrideTheCommandLine) {
         << e.output;
 }
 
+TEST(BatchCli, JobFileSetsColourAndExrOutputPerEntry) {
+    const test::ScratchDir dir;
+    const std::string job = dir.write("jobs.json", R"({
+      "defaults": {"width": 12, "spp": 1, "out_dir": "renders", "compression": "piz"},
+      "jobs": [
+        {"scene": ")" + kCornell + R"(", "name": "plain.exr"},
+        {"scene": ")" + kCornell + R"(", "name": "aces.exr", "working_space": "ACEScg",
+         "output_colorspace": "ACES2065-1", "aov": "albedo,depth", "half": true,
+         "compression": "zip", "view": "ACES 1.0 - SDR Video"}
+      ]})");
+    const test::CliResult r = run_penumbra({"render", "--job", job, "--no-preview", "-q"});
+    ASSERT_EQ(r.status, 0) << r.output;
+    auto spec = [](const std::string& p) {
+        std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(p);
+        return in ? in->spec() : OIIO::ImageSpec();
+    };
+    const OIIO::ImageSpec plain = spec(dir.file("renders/plain.exr"));
+    EXPECT_EQ(plain.get_string_attribute("compression"), "piz");
+    EXPECT_EQ(plain.nchannels, 4);
+    EXPECT_EQ(plain.get_string_attribute("penumbra:working_space"), "Linear Rec.709 (sRGB)");
+    const OIIO::ImageSpec aces = spec(dir.file("renders/aces.exr"));
+    EXPECT_EQ(aces.get_string_attribute("compression"), "zip");
+    EXPECT_EQ(aces.get_string_attribute("penumbra:working_space"), "ACEScg");
+    EXPECT_EQ(aces.get_string_attribute("penumbra:colorspace"), "ACES2065-1");
+    EXPECT_GE(aces.channelindex("Albedo.R"), 0);
+    EXPECT_GE(aces.channelindex("Depth.Z"), 0);
+    ASSERT_GE(aces.channelindex("R"), 0);
+    EXPECT_EQ(aces.channelformats.at(size_t(aces.channelindex("R"))), OIIO::TypeDesc::HALF);
+
+    // A bad value is an error naming the entry, before anything renders.
+    const std::string bad = dir.write("bad.json", R"({"jobs": [{"scene": ")" + kCornell +
+                                                      R"(", "aov": "albedo,colour"}]})");
+    const test::CliResult e = run_penumbra({"render", "--job", bad, "--no-preview"});
+    EXPECT_EQ(e.status, 1);
+    EXPECT_NE(e.output.find("bad.json: jobs[0]: "), std::string::npos) << e.output;
+    EXPECT_NE(e.output.find("colour"), std::string::npos) << e.output;
+}
+
 TEST(BatchCli, TimeLimitStopsBetweenPassesAndRecordsTheSamplesDone) {
     const test::ScratchDir dir;
     const test::CliResult r =

@@ -87,6 +87,34 @@ TEST(JobFile, ShutterKeys) {
     }
 }
 
+TEST(JobFile, ColourAndOutputKeys) {
+    const JobFile f = parse_job_file(
+        R"({"defaults": {"ocio_config": "configs/studio.ocio", "view": "Raw", "half": true},
+            "jobs": [{"scene": "a.gltf", "ocio_config": "builtin", "working_space": "ACEScg",
+                      "output_colorspace": "ACES2065-1", "display": "sRGB", "look": "none",
+                      "aov": "albedo,depth", "compression": "piz", "half": false}]})",
+        "/jobs/j.json");
+    // A config path is relative to the job file; "builtin" is a name, not a path.
+    EXPECT_EQ(f.defaults.ocio_config, "/jobs/configs/studio.ocio");
+    EXPECT_EQ(f.defaults.view, "Raw");
+    EXPECT_EQ(f.defaults.half, true);
+    const JobSettings& s = f.jobs[0].settings;
+    EXPECT_EQ(s.ocio_config, "builtin");
+    EXPECT_EQ(s.working_space, "ACEScg");
+    EXPECT_EQ(s.output_colorspace, "ACES2065-1");
+    EXPECT_EQ(s.display, "sRGB");
+    EXPECT_EQ(s.look, "none");
+    EXPECT_EQ(s.aov, "albedo,depth");
+    EXPECT_EQ(s.compression, "piz");
+    EXPECT_EQ(s.half, false);
+    try {
+        parse_job_file(R"({"jobs": [{"scene": "a.gltf", "half": "yes"}]})", "j.json");
+        FAIL() << "no error";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()), "j.json: jobs[0].half: expected true or false");
+    }
+}
+
 TEST(JobFile, FrameLists) {
     EXPECT_EQ(parse_frame_list("7"), std::vector<int>({7}));
     EXPECT_EQ(parse_frame_list("1-4"), std::vector<int>({1, 2, 3, 4}));
