@@ -107,7 +107,10 @@ Mat4 NodeMotion::world(int node, double t) const {
 
 std::vector<const AnimationCurve*> NodeMotion::chain_curves(int node) const {
     std::vector<const AnimationCurve*> curves;
-    for (int v = node; v >= 0 && curves.size() <= 3 * m_parent.size(); v = m_parent[size_t(v)])
+    // At most one pass over all nodes: a parent cycle outside the scene tree must not
+    // loop forever (world() reports it).
+    size_t visited = 0;
+    for (int v = node; v >= 0 && visited++ <= m_parent.size(); v = m_parent[size_t(v)])
         if (const NodeChannels* nc = m_animations.node(v))
             for (const AnimationCurve* c : {nc->translation, nc->rotation, nc->scale})
                 if (c) curves.push_back(c);

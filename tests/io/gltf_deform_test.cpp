@@ -167,5 +167,31 @@ TEST(GltfDeform, JointIndexOutOfRangeIsAnError) {
     }
 }
 
+// Joints outside the scene tree whose parents form a cycle: an error, not a hang.
+TEST(GltfDeform, JointInAParentCycleIsAnError) {
+    const test::ScratchDir dir;
+    test::GltfBuilder b;
+    const int pos = b.add<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3",
+                                 "\"min\":[0,0,0],\"max\":[1,1,0]");
+    const int joints = b.add<uint8_t>(std::vector<uint8_t>(12, 0), test::kUByte, "VEC4");
+    const int weights = b.add<float>({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, test::kFloat, "VEC4");
+    const std::string path = b.write(
+        dir, "cycle.gltf",
+        "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
+            ",\"JOINTS_0\":" + std::to_string(joints) + ",\"WEIGHTS_0\":" +
+            std::to_string(weights) +
+            "}}]}],\"skins\":[{\"joints\":[1]}],\"nodes\":[{\"mesh\":0,\"skin\":0},"
+            "{\"children\":[2]},{\"children\":[1]}],\"scenes\":[{\"nodes\":[0]}]",
+        test::BufferStorage::DataUri);
+    try {
+        load_gltf(path);
+        FAIL() << "no error";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("is its own ancestor (a node cycle)"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace penumbra
