@@ -141,6 +141,10 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
         {"penumbra:time", std::to_string(setup->scene.shutter_open)},
         {"penumbra:shutter_open", std::to_string(setup->scene.shutter_open)},
         {"penumbra:shutter_close", std::to_string(setup->scene.shutter_close)},
+        // The lens as rendered (file values with command-line overrides): 0 is a pinhole.
+        {"penumbra:aperture_radius", cam_desc.aperture_radius},
+        {"penumbra:focus_distance", cam_desc.focus_distance},
+        {"penumbra:aperture_blades", cam_desc.aperture_blades},
         {"penumbra:rays", std::to_string(stats.rays)},
         {"penumbra:nonfinite_samples", std::to_string(stats.nonfinite_samples)},
     };

@@ -42,8 +42,9 @@ struct RenderCommandOptions {
     std::string filter = "gaussian";
     std::string accel = "embree";
     int max_depth = 8;
-    // Depth of field overrides (0 / empty: keep the file's values).
-    float fstop = 0, aperture_radius = 0, focus_distance = 0;
+    // Depth of field overrides (0 / empty: keep the file's values; aperture_radius -1
+    // keeps the file's, 0 is a pinhole).
+    float fstop = 0, aperture_radius = -1, focus_distance = 0;
     int aperture_blades = -1;
     std::vector<float> focus_on;  // raster x y
     bool default_light = true;

@@ -91,13 +91,15 @@ void add_image_options(CLI::App* cmd, RenderCommandOptions& o) {
     cmd->add_option("--env-rotation", o.env_rotation,
                     "Rotation of the environment image about +Y, in degrees")
         ->capture_default_str();
+    auto* aperture = cmd->add_option("--aperture-radius", o.aperture_radius,
+                                     "Depth of field: lens aperture radius in scene units "
+                                     "(0: pinhole, whatever the file says)")
+                         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--fstop", o.fstop,
                     "Depth of field: f-number (aperture from the focal length of the camera's "
                     "field of view and its sensor, 24 mm high unless the file says otherwise)")
-        ->check(CLI::PositiveNumber);
-    cmd->add_option("--aperture-radius", o.aperture_radius,
-                    "Depth of field: lens aperture radius in scene units (0: pinhole)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(CLI::PositiveNumber)
+        ->excludes(aperture);
     cmd->add_option("--focus-distance", o.focus_distance,
                     "Depth of field: distance of the plane of focus along the view axis")
         ->check(CLI::PositiveNumber);
@@ -174,7 +176,7 @@ bool has_emission(const Scene& scene) {
 void apply_lens_options(const RenderCommandOptions& o, const std::string& path, int width,
                         int height, const Accel& accel, CameraDesc& cam) {
     if (o.aperture_blades >= 0) cam.aperture_blades = o.aperture_blades;
-    if (o.aperture_radius > 0) cam.aperture_radius = o.aperture_radius;
+    if (o.aperture_radius >= 0) cam.aperture_radius = o.aperture_radius;
     if (o.fstop > 0) cam.aperture_radius = aperture_radius_from_fstop(o.fstop, cam.yfov,
                                                                       cam.sensor_height_mm);
     if (o.focus_distance > 0) cam.focus_distance = o.focus_distance;
