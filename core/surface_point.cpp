@@ -8,6 +8,32 @@
 
 namespace penumbra {
 
+namespace {
+
+// Bounds on float rounding (pbrt-v4, section 6.8.1): n operations, unit roundoff u.
+constexpr float gamma(int n) {
+    constexpr float u = std::numeric_limits<float>::epsilon() * 0.5f;
+    return n * u / (1 - n * u);
+}
+
+Vec3 abs(Vec3 v) { return {std::abs(v.x), std::abs(v.y), std::abs(v.z)}; }
+
+// Error of xf.point(q) when q carries q_err (pbrt-v4, section 6.8.6).
+Vec3 point_error(const Transform& xf, Vec3 q, Vec3 q_err) {
+    const Mat4& m = xf.matrix();
+    float e[3];
+    for (int r = 0; r < 3; ++r) {
+        const float carried = std::abs(m(r, 0)) * q_err.x + std::abs(m(r, 1)) * q_err.y +
+                              std::abs(m(r, 2)) * q_err.z;
+        const float made = std::abs(m(r, 0) * q.x) + std::abs(m(r, 1) * q.y) +
+                           std::abs(m(r, 2) * q.z) + std::abs(m(r, 3));
+        e[r] = (gamma(3) + 1) * carried + gamma(3) * made;
+    }
+    return {e[0], e[1], e[2]};
+}
+
+}  // namespace
+
 SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
     const Instance& inst = scene.instances[hit.instance];
     const TriangleMesh& mesh = scene.meshes[hit.mesh];
@@ -28,7 +54,9 @@ SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& h
     const Vec3 p0 = position_at(mesh, i0, ray.time), p1 = position_at(mesh, i1, ray.time),
                p2 = position_at(mesh, i2, ray.time);
     // Interpolating the vertices is more accurate than o + t d far from the origin.
-    sp.p = xf.point(p0 * b0 + p1 * b1 + p2 * b2);
+    const Vec3 q = p0 * b0 + p1 * b1 + p2 * b2;
+    sp.p = xf.point(q);
+    sp.p_error = point_error(xf, q, (abs(p0 * b0) + abs(p1 * b1) + abs(p2 * b2)) * gamma(7));
     const Vec3 e1 = p1 - p0, e2 = p2 - p0;
     // Normals transform with the inverse transpose: right under non-uniform scale, and
     // under mirroring it keeps the normal on the side the (flipped) winding implies.
@@ -38,9 +66,13 @@ SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& h
     sp.ng = ng;
 
     Vec3 ns = ng;
+    sp.p_smooth = sp.p;
     if (!mesh.normals.empty()) {
         const Vec3 n0 = normal_at(mesh, i0, ray.time), n1 = normal_at(mesh, i1, ray.time),
                    n2 = normal_at(mesh, i2, ray.time);
+        const Vec3 v[3] = {p0, p1, p2}, vn[3] = {n0, n1, n2};
+        const float b[3] = {b0, b1, b2};
+        sp.p_smooth = xf.point(smooth_surface_point(p0 * b0 + p1 * b1 + p2 * b2, v, vn, b));
         const Vec3 n = n0 * b0 + n1 * b1 + n2 * b2;
         const Vec3 nw = xf.normal(n);
         const float len = length(nw);
@@ -71,6 +103,18 @@ SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& h
     return sp;
 }
 
+Vec3 smooth_surface_point(Vec3 p, const Vec3 v[3], const Vec3 n[3], const float b[3]) {
+    Vec3 lifted = p;
+    for (int i = 0; i < 3; ++i) {
+        const float len2 = dot(n[i], n[i]);
+        if (!(len2 > 0) || !std::isfinite(len2)) continue;
+        // Signed height of p over vertex i's tangent plane, times |n|^2.
+        const float h = std::min(0.0f, dot(p - v[i], n[i]));
+        lifted -= n[i] * (b[i] * h / len2);
+    }
+    return lifted;
+}
+
 Vec3 offset_ray_origin(Vec3 p, Vec3 ng, Vec3 w) {
     // A relative offset (a few float ULPs of the largest coordinate) plus an absolute
     // floor for points near the origin. Issue "numerical robustness" refines this.
@@ -79,9 +123,33 @@ Vec3 offset_ray_origin(Vec3 p, Vec3 ng, Vec3 w) {
     return p + (dot(w, ng) < 0 ? -ng : ng) * eps;
 }
 
+Vec3 offset_ray_origin(Vec3 p, Vec3 p_error, Vec3 n, Vec3 w) {
+    // The error bound is 0 along an axis where every term is 0 (a plane y = 0), but the
+    // accelerators' own arithmetic is not exact: never less than gamma(3) of the largest
+    // coordinate (about 1.5 ULPs), nor than a tiny absolute floor at the origin.
+    const float scale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    const float d = 2 * std::max({dot(abs(n), p_error), gamma(3) * scale, 1e-20f});
+    const Vec3 side = dot(w, n) < 0 ? -n : n;
+    Vec3 po = p + side * d;
+    // The addition rounds too: step each coordinate one float further along the normal.
+    const float inf = std::numeric_limits<float>::infinity();
+    for (int i = 0; i < 3; ++i) {
+        if (side[i] > 0) po[i] = std::nextafter(po[i], inf);
+        else if (side[i] < 0) po[i] = std::nextafter(po[i], -inf);
+    }
+    return po;
+}
+
 Ray spawn_ray(const SurfacePoint& sp, Vec3 w, float dist, float time) {
     Ray r;
-    r.o = offset_ray_origin(sp.p, sp.ng, w);
+    // The side a ray leaves on is decided by the interpolated normal sp.ns (as the file
+    // gives it, with sp.ng turned to its side), as the integrators' side tests are: a
+    // ray the facet's plane puts on the other side then starts above the facet and is
+    // stopped by it unless the lifted origin clears the facet (a convex coarse mesh),
+    // so it cannot leak through a sheet.
+    const bool outside = dot(w, sp.ns) > 0;
+    r.o = offset_ray_origin(outside ? sp.p_smooth : sp.p, sp.p_error, sp.ng,
+                            outside ? sp.ng : -sp.ng);
     r.d = w;
     r.tmin = 0;
     r.tmax = std::isfinite(dist) ? dist * (1 - 1e-4f) : std::numeric_limits<float>::infinity();

@@ -10,6 +10,15 @@ namespace penumbra {
 
 struct SurfacePoint {
     Vec3 p;        // world position
+    // p lifted onto the smooth surface the vertex normals imply (Hanika 2021, "Hacking
+    // the shadow terminator"): the origin of rays that leave on the normals' side, so
+    // that coarse meshes with smooth normals do not shadow themselves facet by facet.
+    // Equal to p for flat meshes and concave spots.
+    Vec3 p_smooth;
+    // Per-axis bound on the rounding error in p (and p_smooth) from interpolating the
+    // vertices and transforming to world space (pbrt-v4, section 6.8): how far
+    // secondary rays must start from the surface.
+    Vec3 p_error;
     Vec3 ng;       // unit geometric normal (from the triangle's winding, as transformed)
     Vec3 ns;       // unit interpolated shading normal, on the same side as ng
     Vec3 dpdu;     // world tangent along texture u (zero when the mesh has no UVs)
@@ -23,12 +32,32 @@ struct SurfacePoint {
 
 SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& hit);
 
+// Hanika's lifted point in object space: the barycentric mix of p projected onto each
+// vertex's tangent plane, where p lies below it (min(0, .) keeps concave spots as
+// they are). n0..n2 need not be unit length; zero ones leave p as it is.
+Vec3 smooth_surface_point(Vec3 p, const Vec3 v[3], const Vec3 n[3], const float b[3]);
+
 // Origin for a ray leaving p on the side of n that w points to: p pushed along the
 // geometric normal by an offset that scales with |p|, so that the new ray does not hit
 // the surface it leaves (self-intersection "acne").
 Vec3 offset_ray_origin(Vec3 p, Vec3 ng, Vec3 w);
 
-// A ray from p towards a point at distance dist along unit w, stopping short of it.
+// p moved along n, to the side w points to, just past the error box p_error (times a
+// safety factor of 2), then rounded away from p (pbrt-v4's OffsetRayOrigin): a ray from
+// there cannot hit the surface it leaves, and the offset is a few ULPs of the
+// coordinates along n only, so contact shadows stay put far from the origin.
+Vec3 offset_ray_origin(Vec3 p, Vec3 p_error, Vec3 n, Vec3 w);
+
+// A ray from p (p_smooth when w leaves on the side of ns) towards a point at distance dist
+// along unit w, stopping short of it.
 Ray spawn_ray(const SurfacePoint& sp, Vec3 w, float dist, float time);
+
+// The normal that decides on which side of the surface a direction lies (light and
+// BSDF samples whose lobe side disagrees with it are dropped): the interpolated normal
+// sp.ns turned to the side of n_side (the geometric normal on the viewer's side). With
+// spawn_ray's lifted origins this gives a smooth shadow terminator on coarse meshes.
+inline Vec3 side_normal(const SurfacePoint& sp, Vec3 n_side) {
+    return dot(sp.ns, n_side) < 0 ? -sp.ns : sp.ns;
+}
 
 }  // namespace penumbra

@@ -44,7 +44,7 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
                 bsdf.sample(wo, sampler.get_1d(), sampler.get_2d(), Transport::Radiance);
             if (!bs || bs->is_specular()) continue;
             const Vec3 wi_world = sd.frame.to_world(bs->wi);
-            if ((bs->wi.z > 0) != (dot(wi_world, sd.ng) > 0)) continue;
+            if ((bs->wi.z > 0) != (dot(wi_world, side_normal(sp, sd.ng)) > 0)) continue;
             const Ray r = spawn_ray(sp, wi_world, std::numeric_limits<float>::infinity(), ray.time);
             const std::optional<Hit> h = ctx.accel.intersect(r);
             Spectrum Le(0);
@@ -64,7 +64,8 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
                 w = emission_weight(ctx, light, sp.p, sd.ng, &lp.p, wi_world, bs->pdf, strategy,
                                     nl, nb);
             }
-            L += beta * bs->weight() * Le * (w / nb);
+            L += beta * bs->weight() * Le *
+                 (w / nb * bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, wi_world));
         }
         // The specular part: one more sample, continued only when it picks a specular
         // lobe; its weight F / P(lobe) keeps that unbiased.
@@ -73,7 +74,7 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
             bsdf.sample(wo, sampler.get_1d(), sampler.get_2d(), Transport::Radiance);
         if (!specular || !specular->is_specular()) break;
         const Vec3 wi_world = sd.frame.to_world(specular->wi);
-        if ((specular->wi.z > 0) != (dot(wi_world, sd.ng) > 0)) break;
+        if ((specular->wi.z > 0) != (dot(wi_world, side_normal(sp, sd.ng)) > 0)) break;
         beta *= specular->weight();
         ray = spawn_ray(sp, wi_world, std::numeric_limits<float>::infinity(), ray.time);
     }

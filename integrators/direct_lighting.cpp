@@ -39,10 +39,12 @@ Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
     const std::optional<LightSample> ls = light.sample_Li(ref, u, time);
     if (!ls || !(ls->pdf > 0)) return Spectrum(0);
     const Vec3 wi = sd.frame.to_local(ls->wi);
-    // Shading and geometric normals must agree on the side, or light leaks.
-    if ((wi.z > 0) != (dot(ls->wi, sd.ng) > 0)) return Spectrum(0);
+    // The shading frame and the interpolated normal must agree on the side, or light
+    // leaks (spawn_ray then keeps rays the facet's plane puts behind from leaking).
+    if ((wi.z > 0) != (dot(ls->wi, side_normal(sp, sd.ng)) > 0)) return Spectrum(0);
     const Bsdf& bsdf = *sd.bsdf.get();
-    const Spectrum f = bsdf.eval(wo, wi, Transport::Radiance);
+    const Spectrum f = bsdf.eval(wo, wi, Transport::Radiance) *
+                       bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, ls->wi);
     if (is_black(f)) return Spectrum(0);
     if (!unoccluded(ctx, spawn_ray(sp, ls->wi, ls->dist, time), sampler)) return Spectrum(0);
     const float light_pdf = chosen->pmf * ls->pdf;

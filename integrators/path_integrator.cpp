@@ -61,10 +61,12 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
             bsdf.sample(wo, sampler.get_1d(), sampler.get_2d(), Transport::Radiance);
         if (!bs) break;
         const Vec3 wi_world = sd.frame.to_world(bs->wi);
-        // Directions the geometric normal puts on the other side than the lobe would
-        // cross the surface (or leak): end the path there.
-        if ((bs->wi.z > 0) != (dot(wi_world, sd.ng) > 0)) break;
-        beta *= bs->weight();
+        // Directions the interpolated normal puts on the other side than the lobe would
+        // cross the surface (or leak): end the path there. The same test as the light
+        // samples', so that MIS weighs two strategies that cover the same directions.
+        if ((bs->wi.z > 0) != (dot(wi_world, side_normal(sp, sd.ng)) > 0)) break;
+        // The same bump shadowing as the light samples' (direct_lighting.h).
+        beta *= bs->weight() * bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, wi_world);
         eta_scale *= bs->eta * bs->eta;
         specular_bounce = bs->is_specular();
         bsdf_pdf = bs->pdf;

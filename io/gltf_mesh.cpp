@@ -181,8 +181,14 @@ bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, co
         if (length_squared(nrm) > 0) nrm = normalize(nrm);
     }
     const std::vector<float> tangents = reader.read("TANGENT", kTangent, n);
-    for (size_t i = 0; i + 3 < tangents.size(); i += 4)
-        mesh.tangents.push_back({tangents[i], tangents[i + 1], tangents[i + 2], tangents[i + 3]});
+    for (size_t i = 0; i + 3 < tangents.size(); i += 4) {
+        const Vec4 t(tangents[i], tangents[i + 1], tangents[i + 2], tangents[i + 3]);
+        // A NaN would poison every normal-mapped frame it touches; zero-length ones are
+        // harmless (the material then derives the tangent from the UVs).
+        if (!(std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z) && std::isfinite(t.w)))
+            ctx.fail(el, "TANGENT element " + std::to_string(i / 4) + " is not finite");
+        mesh.tangents.push_back(t);
+    }
     const std::string uv_names[2] = {"TEXCOORD_0", "TEXCOORD_1"};
     std::vector<Vec2>* uv_out[2] = {&mesh.uv0, &mesh.uv1};
     for (int k = 0; k < 2; ++k) {

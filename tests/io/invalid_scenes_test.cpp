@@ -40,6 +40,7 @@ const InvalidScene kInvalidScenes[] = {
     {"malformed.gltf", "parse error at line 11"},
     {"missing-image.gltf", "images[0]: cannot read image file 'missing.png'"},
     {"nan-position.gltf", "meshes[0].primitives[0]: POSITION element 1 is not finite"},
+    {"nan-tangent.gltf", "meshes[0].primitives[0]: TANGENT element 2 is not finite"},
     {"node-cycle.gltf", "nodes[0]: reached twice in the node tree"},
     {"skin-joint-out-of-range.gltf", "skins[0]: joint node index 5 out of range (1 nodes)"},
     {"unsupported-extension.gltf",
