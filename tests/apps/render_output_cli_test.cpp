@@ -61,6 +61,17 @@ TEST(RenderOutputCli, AovsHalfCompressionAndAcesSpaces) {
     EXPECT_TRUE(spec.find_attribute("worldtocamera"));
     EXPECT_TRUE(spec.find_attribute("worldtoNDC"));
     EXPECT_FALSE(spec.find_attribute("penumbra:render_seconds"));  // opt-in
+    // What made the image: the program, the scene, how it was traced.
+    const std::string software = spec.get_string_attribute("Software");
+    EXPECT_EQ(software.rfind("penumbra ", 0), 0u) << software;
+    EXPECT_EQ(spec.get_string_attribute("penumbra:scene"),
+              test::source_path("scenes/cornell-box.gltf"));
+    EXPECT_EQ(spec.get_string_attribute("penumbra:accelerator"), "embree");
+    EXPECT_EQ(spec.get_string_attribute("penumbra:integrator"), "path");
+    EXPECT_EQ(spec.get_string_attribute("penumbra:spp"), "2");
+    // At least one camera ray per sample of the 32 x 32 image at 2 spp.
+    EXPECT_GE(std::stoull(std::string(spec.get_string_attribute("penumbra:rays", "0"))), 32u * 32u * 2u);
+    EXPECT_EQ(spec.get_string_attribute("penumbra:nonfinite_samples"), "0");
 }
 
 TEST(RenderOutputCli, SameCommandWithAovsIsBitwiseIdenticalForAnyThreadCount) {
