@@ -94,9 +94,15 @@ struct AgreementReport {
 
     uint64_t disagreements() const { return rays - per_class[0]; }
     uint64_t count(Disagreement d) const { return per_class[static_cast<int>(d)]; }
-    // Coincident faces give two right answers (each side's triangle is hit at the same
-    // t), so they are reported but never counted against a threshold.
-    uint64_t counted() const { return disagreements() - count(Disagreement::Coincident); }
+    // Counted against the threshold: the disagreements that could be the tested
+    // accelerator's fault. Coincident faces give two right answers (each side's triangle
+    // is hit at the same t), and an edge/vertex case that double precision settles in
+    // the tested accelerator's favour is the reference's rounding (on scenes/instances.gltf
+    // Embree's float world-to-object transform puts ~1.6e-5 of the rays on the wrong side
+    // of an edge; our BVH applies the inverse in double). Both are reported, never counted.
+    uint64_t counted() const {
+        return disagreements() - count(Disagreement::Coincident) - edge_test_right;
+    }
     // No "other" disagreement, and at most threshold * rays counted ones.
     bool passes(double threshold) const {
         return count(Disagreement::Other) == 0 && counted() <= threshold * double(rays);

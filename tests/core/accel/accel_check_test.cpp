@@ -108,5 +108,24 @@ TEST(AccelCheck, ClassifiesCoincidentEdgeAndGrazingHits) {
     EXPECT_EQ(classify_hits(scene, r, a, far), Disagreement::None);
 }
 
+// Only disagreements that could be the tested accelerator's fault count: coincident
+// faces, and edge cases that double precision settles in its favour, do not.
+TEST(AccelCheck, ThresholdCountsOnlyWhatCouldBeTheTestedAcceleratorsFault) {
+    AgreementReport rep;
+    rep.rays = 100000;
+    rep.per_class[static_cast<int>(Disagreement::None)] = 100000 - 5;
+    rep.per_class[static_cast<int>(Disagreement::Coincident)] = 2;
+    rep.per_class[static_cast<int>(Disagreement::EdgeOrVertex)] = 3;
+    rep.edge_test_right = 3;  // the reference was wrong each time
+    EXPECT_EQ(rep.disagreements(), 5u);
+    EXPECT_EQ(rep.counted(), 0u);
+    EXPECT_TRUE(rep.passes(1e-5));
+    rep.edge_test_right = 1;
+    rep.edge_reference_right = 2;  // the tested accelerator was wrong twice
+    EXPECT_EQ(rep.counted(), 2u);
+    EXPECT_FALSE(rep.passes(1e-5));
+    EXPECT_TRUE(rep.passes(2e-5));
+}
+
 }  // namespace
 }  // namespace penumbra

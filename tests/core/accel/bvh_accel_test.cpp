@@ -93,9 +93,10 @@ TEST(BvhAccel, AgreesWithEmbreeOnManyMirroredAndScaledInstances) {
     const Scene scene = test::make_instanced_spheres(300, 5);
     // Each side rounds its own world-to-object transform of the ray, which moves hits
     // near edges by ~1e-5 of these small, stretched triangles: edge disagreements ran at
-    // 0.5 to 2.5 in 100,000 rays here (4 seeds of 965,536 rays, none "other"), so this
-    // scene is held to 1 in 10,000; the others to the default 1 in 100,000.
-    const auto reports = test::expect_agreement(scene, 30000, 10000, "instanced spheres", 1e-4);
+    // 0.5 to 2.5 in 100,000 rays here (4 seeds of 965,536 rays, none "other"). Double
+    // precision settles them for our BVH (it applies the inverse in double, Embree in
+    // float), so they are not counted and the default 1 in 100,000 holds.
+    const auto reports = test::expect_agreement(scene, 30000, 10000, "instanced spheres");
     // The rays must actually reach the instances, or the agreement means nothing.
     const EmbreeAccel embree(scene);
     const auto rays = test::agreement_rays(scene, embree, 30000, 0);

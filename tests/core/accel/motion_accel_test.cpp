@@ -74,7 +74,7 @@ TEST(MotionAccel, AgreesWithEmbreeOnMovingMirroredAndScaledInstances) {
     ASSERT_TRUE(scene.has_motion());
     // The same tolerance as the static instanced spheres (bvh_accel_test.cpp): each side
     // rounds its own world-to-object transform, which moves hits near edges.
-    test::expect_agreement(scene, 30000, 10000, "moving instances", 1e-4);
+    test::expect_agreement(scene, 30000, 10000, "moving instances");
     // The rays carry times across the shutter, and reach the instances.
     const EmbreeAccel embree(scene);
     const auto rays = test::agreement_rays(scene, embree, 30000, 0);
