@@ -69,7 +69,7 @@ void BM_EnvironmentPdf(benchmark::State& state) {
     Rng rng(6);
     for (auto _ : state) {
         const Vec3 wi = square_to_uniform_sphere({rng.next_float(), rng.next_float()});
-        benchmark::DoNotOptimize(light->pdf_Li(kReceiver, wi));
+        benchmark::DoNotOptimize(light->pdf_Li(kReceiver, wi, 0));
     }
     state.SetItemsProcessed(state.iterations());
 }
@@ -96,7 +96,7 @@ void BM_AreaLightPdf(benchmark::State& state) {
     Rng rng(8);
     for (auto _ : state) {
         const auto s = light->sample_Li(kReceiver, {rng.next_float(), rng.next_float()}, 0);
-        benchmark::DoNotOptimize(light->pdf_Li(kReceiver, s ? s->wi : Vec3(0, 1, 0)));
+        benchmark::DoNotOptimize(light->pdf_Li(kReceiver, s ? s->wi : Vec3(0, 1, 0), 0));
     }
     state.SetItemsProcessed(state.iterations());
 }

@@ -33,9 +33,8 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         const Bsdf& bsdf = *sd.bsdf.get();
         const Vec3 wo = sd.frame.to_local(wo_world);
 
-        for (int i = 0; i < m_options.light_samples; ++i)
-            L += beta * sample_one_light(ctx, sp, sd, wo, ray.time, sampler, strategy, nl, nb) /
-                 nl;
+        L += beta * sample_light_stratified(ctx, sp, sd, wo, ray.time, sampler,
+                                            m_options.light_samples, strategy, nb);
 
         // BSDF samples: emission they find, MIS-weighted against the light samples. They
         // estimate the non-specular lobes only; specular lobes are followed below.
@@ -53,16 +52,16 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
                 const EnvironmentLight* env = ctx.lights.environment();
                 if (!env) continue;
                 Le = env->Le(wi_world);
-                w = emission_weight(ctx, env, sp.p, sd.ng, nullptr, wi_world, bs->pdf, strategy,
-                                    nl, nb);
+                w = emission_weight(ctx, env, sp.p, sd.ng, nullptr, wi_world, ray.time, bs->pdf,
+                                    strategy, nl, nb);
             } else {
                 const SurfacePoint lp = make_surface_point(ctx.scene, r, *h);
                 const MaterialDesc& m = ctx.scene.material(lp.material);
                 if (!m.is_emissive()) continue;
                 Le = shade(ctx.scene, lp, -wi_world).emission;
                 const Light* light = ctx.lights.triangle_light(h->instance, h->mesh, h->prim);
-                w = emission_weight(ctx, light, sp.p, sd.ng, &lp.p, wi_world, bs->pdf, strategy,
-                                    nl, nb);
+                w = emission_weight(ctx, light, sp.p, sd.ng, &lp.p, wi_world, ray.time, bs->pdf,
+                                    strategy, nl, nb);
             }
             L += beta * bs->weight() * Le *
                  (w / nb * bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, wi_world));

@@ -1,5 +1,11 @@
 #include "integrators/direct_lighting.h"
 
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+#include "core/sampling/rng.h"
+
 namespace penumbra {
 
 bool pass_through(const SurfacePoint& sp, const ShadingData& sd, Sampler& sampler, Ray& ray) {
@@ -25,13 +31,13 @@ bool unoccluded(const RenderContext& ctx, Ray ray, Sampler& sampler) {
     return false;
 }
 
-Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
-                          const ShadingData& sd, Vec3 wo, float time, Sampler& sampler,
-                          LightStrategy strategy, float light_samples, float bsdf_samples) {
-    const float u_light = sampler.get_1d();
-    const Vec2 u = sampler.get_2d();
-    const std::optional<SampledLight> chosen = ctx.lights.sample(u_light);
-    if (!chosen) return Spectrum(0);
+namespace {
+
+// The light-sampling estimate for one point u on an already chosen light.
+Spectrum sample_chosen_light(const RenderContext& ctx, const SurfacePoint& sp,
+                             const ShadingData& sd, Vec3 wo, float time, Sampler& sampler,
+                             const SampledLight* chosen, Vec2 u, LightStrategy strategy,
+                             float light_samples, float bsdf_samples) {
     const Light& light = *chosen->light;
     // Light-sampling estimates of non-delta lights are dropped under BSDF-only.
     if (strategy == LightStrategy::BsdfOnly && !light.is_delta()) return Spectrum(0);
@@ -55,17 +61,60 @@ Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
     return f * ls->Li * (std::abs(wi.z) * w / light_pdf);
 }
 
+}  // namespace
+
+Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
+                          const ShadingData& sd, Vec3 wo, float time, Sampler& sampler,
+                          LightStrategy strategy, float light_samples, float bsdf_samples) {
+    const float u_light = sampler.get_1d();
+    const Vec2 u = sampler.get_2d();
+    const std::optional<SampledLight> chosen = ctx.lights.sample(u_light);
+    if (!chosen) return Spectrum(0);
+    return sample_chosen_light(ctx, sp, sd, wo, time, sampler, &*chosen, u, strategy,
+                               light_samples, bsdf_samples);
+}
+
+Spectrum sample_light_stratified(const RenderContext& ctx, const SurfacePoint& sp,
+                                 const ShadingData& sd, Vec3 wo, float time, Sampler& sampler,
+                                 int n, LightStrategy strategy, float bsdf_samples) {
+    if (n <= 0) return Spectrum(0);
+    const std::optional<SampledLight> chosen = ctx.lights.sample(sampler.get_1d());
+    // Latin hypercube over the light's sample square: sample i takes column i and row
+    // perm[i], jittered inside, so the n points cover the light evenly in both
+    // directions while each, alone, is uniform (the estimator stays unbiased and its MIS
+    // weights those of n independent samples). The permutation comes from one sampler
+    // dimension, so it is a function of (seed, pixel, sample index) like everything else.
+    const float u_perm = sampler.get_1d();
+    if (!chosen) return Spectrum(0);
+    std::vector<uint32_t> perm(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i) perm[i] = static_cast<uint32_t>(i);
+    uint32_t bits;
+    std::memcpy(&bits, &u_perm, sizeof bits);
+    Rng rng(bits);
+    for (int i = n - 1; i > 0; --i) std::swap(perm[i], perm[rng.next_below(uint32_t(i + 1))]);
+    Spectrum sum(0);
+    const float inv_n = 1.0f / n;
+    for (int i = 0; i < n; ++i) {
+        const Vec2 jitter = sampler.get_2d();
+        const Vec2 u(std::min((i + jitter.x) * inv_n, 0x1.fffffep-1f),
+                     std::min((perm[i] + jitter.y) * inv_n, 0x1.fffffep-1f));
+        sum += sample_chosen_light(ctx, sp, sd, wo, time, sampler, &*chosen, u, strategy,
+                                   float(n), bsdf_samples);
+    }
+    return sum * inv_n;
+}
+
 float emission_weight(const RenderContext& ctx, const Light* light, Vec3 prev_p, Vec3 prev_n,
-                      const Vec3* hit_p, Vec3 wi, float bsdf_pdf, LightStrategy strategy,
-                      float light_samples, float bsdf_samples) {
+                      const Vec3* hit_p, Vec3 wi, float time, float bsdf_pdf,
+                      LightStrategy strategy, float light_samples, float bsdf_samples) {
     if (strategy == LightStrategy::BsdfOnly) return 1;
     if (strategy == LightStrategy::LightOnly) return 0;
     if (!light) return 1;  // emitter the light set does not sample
     float light_pdf;
     if (hit_p)
-        light_pdf = static_cast<const TriangleLight*>(light)->pdf_at(prev_p, *hit_p);
+        light_pdf = static_cast<const TriangleLight*>(light)->pdf_at(prev_p, *hit_p, time);
     else
-        light_pdf = light->pdf_Li(ShadingPoint{prev_p, prev_n}, wi);
+        light_pdf = light->pdf_Li(ShadingPoint{prev_p, prev_n}, wi, time);
     light_pdf *= ctx.lights.pmf(light);
     return power_heuristic(bsdf_samples, bsdf_pdf, light_samples, light_pdf);
 }

@@ -50,11 +50,19 @@ Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
                           LightStrategy strategy, float light_samples = 1,
                           float bsdf_samples = 1);
 
+// Distribution ray tracing's soft shadows: one light chosen by power, then n shadow rays
+// to n different points of it, stratified over the light (a Latin hypercube of its
+// sample square). Returns the average of the n estimates, each MIS-weighted against
+// `bsdf_samples` BSDF samples per n light samples.
+Spectrum sample_light_stratified(const RenderContext& ctx, const SurfacePoint& sp,
+                                 const ShadingData& sd, Vec3 wo, float time, Sampler& sampler,
+                                 int n, LightStrategy strategy, float bsdf_samples = 1);
+
 // MIS weight for emission found by a BSDF-sampled ray that left `prev_p` with solid-angle
 // density bsdf_pdf and hit `light` (a TriangleLight at hit_p, or the environment when
-// hit_p is null).
+// hit_p is null) at the ray's time.
 float emission_weight(const RenderContext& ctx, const Light* light, Vec3 prev_p, Vec3 prev_n,
-                      const Vec3* hit_p, Vec3 wi, float bsdf_pdf, LightStrategy strategy,
-                      float light_samples = 1, float bsdf_samples = 1);
+                      const Vec3* hit_p, Vec3 wi, float time, float bsdf_pdf,
+                      LightStrategy strategy, float light_samples = 1, float bsdf_samples = 1);
 
 }  // namespace penumbra

@@ -28,7 +28,7 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
                 const Vec3 wi = normalize(ray.d);
                 const float w = unweighted ? 1.0f
                                            : emission_weight(ctx, env, prev_p, prev_n, nullptr,
-                                                             wi, bsdf_pdf, strategy);
+                                                             wi, ray.time, bsdf_pdf, strategy);
                 L += beta * env->Le(wi) * w;
             }
             break;
@@ -47,7 +47,7 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
             if (!unweighted) {
                 const Light* light = ctx.lights.triangle_light(hit->instance, hit->mesh, hit->prim);
                 w = emission_weight(ctx, light, prev_p, prev_n, &sp.p, wo_world * -1.0f,
-                                    bsdf_pdf, strategy);
+                                    ray.time, bsdf_pdf, strategy);
             }
             L += beta * sd.emission * w;
         }

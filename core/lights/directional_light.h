@@ -14,7 +14,7 @@ public:
         : m_w(normalize(direction)), m_E(irradiance), m_radius(scene_radius) {}
     std::optional<LightSample> sample_Li(const ShadingPoint& ref, Vec2 u,
                                          float time) const override;
-    float pdf_Li(const ShadingPoint&, Vec3) const override { return 0; }
+    float pdf_Li(const ShadingPoint&, Vec3, float) const override { return 0; }
     float power() const override { return kPi * m_radius * m_radius * luminance(m_E); }
     bool is_delta() const override { return true; }
     std::string describe() const override { return "directional"; }

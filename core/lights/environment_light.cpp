@@ -68,12 +68,12 @@ std::optional<LightSample> EnvironmentLight::sample_Li(const ShadingPoint&, Vec2
     const Vec3 wi = uv_to_direction(uv);
     // The density as pdf_Li reports it for wi, so that MIS sees one consistent value
     // even where float round-off moves wi across a texel edge.
-    const float pdf = pdf_Li(ShadingPoint{}, wi);
+    const float pdf = pdf_Li(ShadingPoint{}, wi, 0);
     if (!(pdf > 0) || !std::isfinite(pdf)) return std::nullopt;
     return LightSample{Le(wi), wi, inf, pdf, false};
 }
 
-float EnvironmentLight::pdf_Li(const ShadingPoint&, Vec3 wi) const {
+float EnvironmentLight::pdf_Li(const ShadingPoint&, Vec3 wi, float) const {
     if (m_image.width == 0) return is_black(m_constant) ? 0.0f : uniform_sphere_pdf();
     const Vec2 uv = direction_to_uv(wi);
     // Jacobian of (u, v) -> direction: 2 pi^2 sin(theta).

@@ -22,7 +22,7 @@ public:
 
     std::optional<LightSample> sample_Li(const ShadingPoint& ref, Vec2 u,
                                          float time) const override;
-    float pdf_Li(const ShadingPoint& ref, Vec3 wi) const override;
+    float pdf_Li(const ShadingPoint& ref, Vec3 wi, float time) const override;
     float power() const override;
     bool is_delta() const override { return false; }
     std::string describe() const override { return "environment"; }

@@ -31,8 +31,9 @@ public:
     // cannot reach ref (behind a spot cone, zero intensity).
     virtual std::optional<LightSample> sample_Li(const ShadingPoint& ref, Vec2 u,
                                                  float time) const = 0;
-    // Solid-angle density of sample_Li choosing wi; 0 for delta lights.
-    virtual float pdf_Li(const ShadingPoint& ref, Vec3 wi) const = 0;
+    // Solid-angle density of sample_Li choosing wi at time (as sample_Li's); 0 for delta
+    // lights.
+    virtual float pdf_Li(const ShadingPoint& ref, Vec3 wi, float time) const = 0;
     // Total emitted power, for choosing among lights.
     virtual float power() const = 0;
     virtual bool is_delta() const = 0;

@@ -18,12 +18,8 @@ LightSet::LightSet(const Scene& scene, std::unique_ptr<EnvironmentLight> environ
             const TriangleMesh& mesh = scene.meshes[mi];
             const MaterialDesc& mat = scene.material(mesh.material);
             if (!mat.is_emissive()) continue;
-            // Emitters that move within the shutter are not light-sampled: a
-            // TriangleLight is fixed in world space, and Light::pdf_Li has no time to
-            // place the triangle with. Paths still find them by BSDF sampling (a hit
-            // without a light counts with MIS weight 1), so the estimate stays unbiased,
-            // only noisier.
-            if (!scene.instances[ii].motion.empty() || !mesh.motion_positions.empty()) continue;
+            // Emitters that move within the shutter are sampled where they are at the
+            // ray's time (TriangleLight::placed).
             auto& mean = mean_Le[mesh.material + 1];
             if (!mean)
                 mean = mat.emissive * mat.emissive_strength * mean_emission_texture(scene, mat);

@@ -11,7 +11,7 @@ public:
     PointLight(Vec3 position, Spectrum intensity) : m_p(position), m_I(intensity) {}
     std::optional<LightSample> sample_Li(const ShadingPoint& ref, Vec2 u,
                                          float time) const override;
-    float pdf_Li(const ShadingPoint&, Vec3) const override { return 0; }
+    float pdf_Li(const ShadingPoint&, Vec3, float) const override { return 0; }
     float power() const override { return 4 * kPi * luminance(m_I); }
     bool is_delta() const override { return true; }
     std::string describe() const override { return "point"; }

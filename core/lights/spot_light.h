@@ -13,7 +13,7 @@ public:
               float outer_cone);
     std::optional<LightSample> sample_Li(const ShadingPoint& ref, Vec2 u,
                                          float time) const override;
-    float pdf_Li(const ShadingPoint&, Vec3) const override { return 0; }
+    float pdf_Li(const ShadingPoint&, Vec3, float) const override { return 0; }
     float power() const override;
     bool is_delta() const override { return true; }
     std::string describe() const override { return "spot"; }

@@ -3,50 +3,82 @@
 #include <cmath>
 
 #include "core/sampling/warp.h"
+#include "core/scene/motion.h"
 #include "core/scene/emission.h"
 
 namespace penumbra {
 
 TriangleLight::TriangleLight(const Scene& scene, uint32_t instance, uint32_t mesh_index,
                              uint32_t prim, Spectrum mean_Le)
-    : m_scene(&scene) {
+    : m_scene(&scene), m_instance(instance), m_mesh(mesh_index), m_prim(prim) {
     const TriangleMesh& mesh = scene.meshes[mesh_index];
-    const Transform& xf = scene.instances[instance].to_world;
+    const Instance& inst = scene.instances[instance];
+    m_moving = !inst.motion.empty() || !mesh.motion_positions.empty();
     m_material = mesh.material;
+    Vec3 p[3];
     for (int k = 0; k < 3; ++k) {
         const uint32_t i = mesh.indices[3 * prim + k];
-        m_p[k] = xf.point(mesh.positions[i]);
+        p[k] = inst.to_world.point(mesh.positions[i]);
         m_uv0[k] = mesh.uv0.empty() ? Vec2() : mesh.uv0[i];
         m_uv1[k] = mesh.uv1.empty() ? Vec2() : mesh.uv1[i];
     }
-    const Vec3 c = cross(m_p[1] - m_p[0], m_p[2] - m_p[0]);
-    const float len = length(c);
-    m_area = 0.5f * len;
-    m_n = len > 0 ? c / len : Vec3(0, 0, 1);
+    m_static = place(p[0], p[1], p[2]);
+    m_area = m_static.area;
+    // Power only chooses among lights: any positive estimate keeps sampling unbiased,
+    // so a moving triangle is weighed by its size at shutter open.
     m_power = 2 * kPi * m_area * luminance(mean_Le);  // two-sided
 }
 
-float TriangleLight::pdf_at(Vec3 ref, Vec3 p) const {
+TriangleLight::Placed TriangleLight::place(Vec3 p0, Vec3 p1, Vec3 p2) {
+    Placed t{{p0, p1, p2}, Vec3(0, 0, 1), 0};
+    const Vec3 c = cross(p1 - p0, p2 - p0);
+    const float len = length(c);
+    t.area = 0.5f * len;
+    if (len > 0) t.n = c / len;
+    return t;
+}
+
+TriangleLight::Placed TriangleLight::placed(float time) const {
+    if (!m_moving) return m_static;
+    const TriangleMesh& mesh = m_scene->meshes[m_mesh];
+    const Transform xf = instance_transform_at(m_scene->instances[m_instance], time);
+    Vec3 p[3];
+    for (int k = 0; k < 3; ++k)
+        p[k] = xf.point(position_at(mesh, mesh.indices[3 * m_prim + k], time));
+    return place(p[0], p[1], p[2]);
+}
+
+namespace {
+
+// Area density 1/A to solid angle at ref: dist^2 / (|cos| A).
+float solid_angle_pdf(Vec3 ref, Vec3 p, Vec3 n, float area) {
     const Vec3 d = p - ref;
     const float dist2 = length_squared(d);
-    const float cos_light = std::abs(dot(m_n, d)) / std::sqrt(dist2);
-    if (!(cos_light > 0) || !(m_area > 0)) return 0;
-    // Area density 1/A to solid angle: dist^2 / (|cos| A).
-    return dist2 / (cos_light * m_area);
+    const float cos_light = std::abs(dot(n, d)) / std::sqrt(dist2);
+    if (!(cos_light > 0) || !(area > 0)) return 0;
+    return dist2 / (cos_light * area);
+}
+
+}  // namespace
+
+float TriangleLight::pdf_at(Vec3 ref, Vec3 p, float time) const {
+    const Placed t = placed(time);
+    return solid_angle_pdf(ref, p, t.n, t.area);
 }
 
 std::optional<LightSample> TriangleLight::sample_Li(const ShadingPoint& ref, Vec2 u,
-                                                    float) const {
-    if (!(m_area > 0)) return std::nullopt;
+                                                    float time) const {
+    const Placed t = placed(time);
+    if (!(t.area > 0)) return std::nullopt;
     const Vec2 b = square_to_triangle(u);
     const float b0 = 1 - b.x - b.y;
-    const Vec3 p = m_p[0] * b0 + m_p[1] * b.x + m_p[2] * b.y;
+    const Vec3 p = t.p[0] * b0 + t.p[1] * b.x + t.p[2] * b.y;
     const Vec3 d = p - ref.p;
     const float dist2 = length_squared(d);
     if (!(dist2 > 0)) return std::nullopt;
     const float dist = std::sqrt(dist2);
     const Vec3 wi = d / dist;
-    const float pdf = pdf_at(ref.p, p);
+    const float pdf = solid_angle_pdf(ref.p, p, t.n, t.area);
     if (!(pdf > 0) || !std::isfinite(pdf)) return std::nullopt;
     const Vec2 uv0 = m_uv0[0] * b0 + m_uv0[1] * b.x + m_uv0[2] * b.y;
     const Vec2 uv1 = m_uv1[0] * b0 + m_uv1[1] * b.x + m_uv1[2] * b.y;
@@ -55,13 +87,14 @@ std::optional<LightSample> TriangleLight::sample_Li(const ShadingPoint& ref, Vec
     return LightSample{Le, wi, dist, pdf, false};
 }
 
-float TriangleLight::pdf_Li(const ShadingPoint& ref, Vec3 wi) const {
+float TriangleLight::pdf_Li(const ShadingPoint& ref, Vec3 wi, float time) const {
     // Moller-Trumbore: only used for MIS weights, never for visibility.
-    const Vec3 e1 = m_p[1] - m_p[0], e2 = m_p[2] - m_p[0];
+    const Placed tri = placed(time);
+    const Vec3 e1 = tri.p[1] - tri.p[0], e2 = tri.p[2] - tri.p[0];
     const Vec3 pv = cross(wi, e2);
     const float det = dot(e1, pv);
     if (det == 0) return 0;
-    const Vec3 tv = ref.p - m_p[0];
+    const Vec3 tv = ref.p - tri.p[0];
     const float b1 = dot(tv, pv) / det;
     if (b1 < 0 || b1 > 1) return 0;
     const Vec3 qv = cross(tv, e1);
@@ -69,7 +102,7 @@ float TriangleLight::pdf_Li(const ShadingPoint& ref, Vec3 wi) const {
     if (b2 < 0 || b1 + b2 > 1) return 0;
     const float t = dot(e2, qv) / det;
     if (!(t > 0)) return 0;
-    return pdf_at(ref.p, ref.p + wi * t);
+    return solid_angle_pdf(ref.p, ref.p + wi * t, tri.n, tri.area);
 }
 
 float TriangleLight::power() const { return m_power; }

@@ -17,19 +17,33 @@ public:
     std::optional<LightSample> sample_Li(const ShadingPoint& ref, Vec2 u,
                                          float time) const override;
     // Finds where the ray (ref.p, wi) meets the triangle; 0 if it misses.
-    float pdf_Li(const ShadingPoint& ref, Vec3 wi) const override;
-    // Solid-angle density of sampling point p (with unit normal n) from ref.
-    float pdf_at(Vec3 ref, Vec3 p) const;
+    float pdf_Li(const ShadingPoint& ref, Vec3 wi, float time) const override;
+    // Solid-angle density of sampling point p of the triangle (where it is at time)
+    // from ref.
+    float pdf_at(Vec3 ref, Vec3 p, float time) const;
     float power() const override;
     bool is_delta() const override { return false; }
     std::string describe() const override { return "triangle"; }
-    float area() const { return m_area; }
+    float area() const { return m_area; }  // at shutter open
 
 private:
+    // The triangle in world space at a time. A static triangle is placed once; one on a
+    // moving instance or a deforming mesh is placed at the ray's time exactly as
+    // make_surface_point places its hits (core/scene/motion.h), so light samples and the
+    // MIS densities of BSDF-sampled hits describe the same triangle.
+    struct Placed {
+        Vec3 p[3];
+        Vec3 n;  // unit geometric normal
+        float area;
+    };
+    Placed placed(float time) const;
+    static Placed place(Vec3 p0, Vec3 p1, Vec3 p2);
+
     const Scene* m_scene;
+    uint32_t m_instance, m_mesh, m_prim;
+    bool m_moving;
     int m_material;
-    Vec3 m_p[3];
-    Vec3 m_n;  // unit geometric normal
+    Placed m_static;  // at shutter open
     Vec2 m_uv0[3], m_uv1[3];
     float m_area;
     float m_power;

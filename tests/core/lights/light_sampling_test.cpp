@@ -44,10 +44,10 @@ TEST(EnvironmentLight, ImageSamplingMatchesPdf) {
                 const auto ls = env.sample_Li(ref, {rng.next_float(), rng.next_float()}, 0);
                 if (!ls) return std::nullopt;
                 // The returned pdf and radiance agree with pdf_Li and Le.
-                EXPECT_NEAR(ls->pdf, env.pdf_Li(ref, ls->wi), 1e-3f * ls->pdf);
+                EXPECT_NEAR(ls->pdf, env.pdf_Li(ref, ls->wi, 0), 1e-3f * ls->pdf);
                 return ls->wi;
             },
-            [&](Vec3 w) { return env.pdf_Li(ref, w); }, opt);
+            [&](Vec3 w) { return env.pdf_Li(ref, w, 0); }, opt);
         EXPECT_TRUE(r.passed) << r.report;
         EXPECT_NEAR(r.pdf_integral, 1.0, 1e-3);
     }
@@ -75,7 +75,7 @@ TEST(EnvironmentLight, ConstantSamplingIsUniform) {
             const auto ls = env.sample_Li(ref, {rng.next_float(), rng.next_float()}, 0);
             return ls ? std::optional<Vec3>(ls->wi) : std::nullopt;
         },
-        [&](Vec3 w) { return env.pdf_Li(ref, w); }, opt);
+        [&](Vec3 w) { return env.pdf_Li(ref, w, 0); }, opt);
     EXPECT_TRUE(r.passed) << r.report;
 }
 
@@ -98,11 +98,11 @@ TEST(TriangleLight, AreaSamplingMatchesSolidAnglePdf) {
         [&](Rng& rng) -> std::optional<Vec3> {
             const auto ls = light.sample_Li(ref, {rng.next_float(), rng.next_float()}, 0);
             if (!ls) return std::nullopt;
-            EXPECT_NEAR(ls->pdf, light.pdf_Li(ref, ls->wi), 1e-3f * ls->pdf);
+            EXPECT_NEAR(ls->pdf, light.pdf_Li(ref, ls->wi, 0), 1e-3f * ls->pdf);
             EXPECT_EQ(ls->Li, Spectrum(3));
             return ls->wi;
         },
-        [&](Vec3 w) { return light.pdf_Li(ref, w); }, opt);
+        [&](Vec3 w) { return light.pdf_Li(ref, w, 0); }, opt);
     EXPECT_TRUE(r.passed) << r.report;
     EXPECT_NEAR(r.pdf_integral, 1.0, 1e-2);
 }
