@@ -161,8 +161,8 @@ void print_summary(const std::vector<JobResult>& results) {
     size_t width = 5;
     for (const JobResult& r : results)
         width = std::max(width, fs::path(r.scene).filename().string().size());
-    std::printf("%-*s  %5s  %-7s  %8s  %7s  %8s  %s\n", int(width), "scene", "frame", "status",
-                "time", "spp", "rays/s", "output / error");
+    std::printf("%-*s  %5s  %-7s  %8s  %7s  %8s  %10s  %s\n", int(width), "scene", "frame",
+                "status", "time", "spp", "rays/s", "relMSE", "output / error");
     size_t counts[4] = {0, 0, 0, 0};
     for (const JobResult& r : results) {
         static const char* const kStatus[] = {"ok", "partial", "failed", "skipped"};
@@ -173,10 +173,13 @@ void print_summary(const std::vector<JobResult>& results) {
             ran && r.seconds > 0 ? format_count(r.rays / r.seconds) : std::string("-");
         const std::string note =
             r.message.empty() ? r.output : (r.output.empty() ? "" : r.output + ": ") + r.message;
-        std::printf("%-*s  %5s  %-7s  %8s  %7s  %8s  %s\n", int(width),
+        char relmse[32] = "-";
+        if (ran && r.relmse) std::snprintf(relmse, sizeof relmse, "%.4e", *r.relmse);
+        std::printf("%-*s  %5s  %-7s  %8s  %7s  %8s  %10s  %s\n", int(width),
                     fs::path(r.scene).filename().string().c_str(), frame.c_str(),
                     kStatus[int(r.status)], ran ? format_duration(r.seconds).c_str() : "-",
-                    ran ? std::to_string(r.spp).c_str() : "-", rate.c_str(), note.c_str());
+                    ran ? std::to_string(r.spp).c_str() : "-", rate.c_str(), relmse,
+                    note.c_str());
     }
     std::printf("%zu images: %zu ok, %zu partial, %zu failed, %zu skipped\n", results.size(),
                 counts[0], counts[1], counts[2], counts[3]);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,9 +36,11 @@ struct JobResult {
     double seconds = 0;  // rendering only
     uint32_t spp = 0;
     uint64_t rays = 0;
+    std::optional<double> relmse;  // against --reference, when given
 };
 
-// One row per job: scene, frame, status, time, spp, rays/s, and the output or error.
+// One row per job: scene, frame, status, time, spp, rays/s, relMSE against the
+// reference (when given), and the output or error.
 void print_summary(const std::vector<JobResult>& results);
 
 }  // namespace penumbra

@@ -166,6 +166,7 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
     files.reference = o.reference;
     const RenderFilesResult written =
         write_render(files, film, *setup->color, cam_desc, std::move(metadata));
+    result.relmse = written.relmse;
     const std::string& preview = files.preview;
     const double write_s = since(t0);
     result.status = stats.interrupted ? JobStatus::Partial : JobStatus::Ok;

@@ -225,6 +225,27 @@ TEST(BatchCli, JobFileSetsColourAndExrOutputPerEntry) {
     EXPECT_NE(e.output.find("colour"), std::string::npos) << e.output;
 }
 
+TEST(BatchCli, SummaryTableGivesEachImagesErrorAgainstTheReference) {
+    const test::ScratchDir dir;
+    const std::string ref = dir.file("ref.exr");
+    ASSERT_EQ(run_penumbra(args({"render", kCornell, "-o", ref, "-q"}, kFast)).status, 0);
+    const test::CliResult r = run_penumbra(args(
+        {"render", kCornell, kCornell, "--out-dir", dir.file("out"), "--name", "{index}.exr",
+         "--reference", ref, "--seed", "4"},
+        kFast));
+    ASSERT_EQ(r.status, 0) << r.output;
+    // The header row names the column, and each image's row carries a number in it.
+    EXPECT_NE(r.output.find("relMSE"), std::string::npos) << r.output;
+    const std::regex row(R"(cornell-box\.gltf\s+\S+\s+ok\s+\S+\s+1\s+\S+\s+(\d\.\d{4}e[-+]\d+))");
+    auto it = std::sregex_iterator(r.output.begin(), r.output.end(), row);
+    int rows = 0;
+    for (; it != std::sregex_iterator(); ++it) {
+        ++rows;
+        EXPECT_GT(std::stod((*it)[1].str()), 0.0);  // another seed than the reference's
+    }
+    EXPECT_EQ(rows, 2) << r.output;
+}
+
 TEST(BatchCli, TimeLimitStopsBetweenPassesAndRecordsTheSamplesDone) {
     const test::ScratchDir dir;
     const test::CliResult r =
