@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages penumbra needs to build, test and run. Idempotent:
 # packages already present are skipped, and apt is not touched when nothing is missing.
-# Runs apt-get directly as root, through sudo otherwise.
+# Runs apt-get directly as root, through sudo otherwise. clang with its sanitizer and
+# libFuzzer runtimes (libclang-rt-14-dev) and llvm-symbolizer (llvm-14) are for the asan
+# preset: scripts/sanitize.sh and scripts/fuzz.sh.
 set -euo pipefail
 
 packages=(
@@ -10,6 +12,7 @@ packages=(
     libopenimageio-dev openimageio-tools libopencolorio-dev
     libtinygltf-dev nlohmann-json3-dev libstb-dev
     libcli11-dev libgtest-dev libbenchmark-dev
+    clang libclang-rt-14-dev llvm-14
 )
 
 missing=()

@@ -1,0 +1,52 @@
+// libFuzzer entry point for the glTF loader: each input is written to a file and loaded
+// as .gltf JSON or, when it starts with the "glTF" magic, as .glb (the loader decides by
+// the header, as the spec says). Bad input must end in SceneError; any other exception,
+// a CHECK failure or a sanitizer report is a bug, and libFuzzer stops on it.
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "io/gltf_loader.h"
+
+namespace {
+
+// One file per process (libFuzzer may fork workers), in a folder of its own so that
+// relative URIs in the input resolve to nothing but files the input cannot create.
+const std::string& input_path() {
+    static const std::string path = [] {
+        const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                          ("penumbra-fuzz-" + std::to_string(getpid()));
+        std::filesystem::create_directories(dir);
+        return (dir / "input.gltf").string();
+    }();
+    return path;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    // Warnings about the (mostly broken) inputs would dominate the run time.
+    penumbra::set_log_level(penumbra::LogLevel::Silent);
+    return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const std::string& path = input_path();
+    {
+        std::ofstream out(path, std::ios::binary | std::ios::trunc);
+        out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+    }
+    try {
+        penumbra::load_gltf(path);
+    } catch (const penumbra::SceneError&) {
+        // The expected outcome for bad input.
+    }
+    return 0;
+}
