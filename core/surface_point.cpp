@@ -124,11 +124,13 @@ Vec3 offset_ray_origin(Vec3 p, Vec3 ng, Vec3 w) {
 }
 
 Vec3 offset_ray_origin(Vec3 p, Vec3 p_error, Vec3 n, Vec3 w) {
-    // The error bound is 0 along an axis where every term is 0 (a plane y = 0), but the
-    // accelerators' own arithmetic is not exact: never less than gamma(3) of the largest
-    // coordinate (about 1.5 ULPs), nor than a tiny absolute floor at the origin.
+    // Safety factor 4: the accelerators move the origin into instance space, which
+    // rounds about as much again as p_error covers. The error bound is 0 along an axis
+    // where every term is 0 (a plane y = 0), but the accelerators' arithmetic is not
+    // exact: never less than gamma(3) of the largest coordinate (about 1.5 ULPs), nor a
+    // tiny absolute floor.
     const float scale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-    const float d = 2 * std::max({dot(abs(n), p_error), gamma(3) * scale, 1e-20f});
+    const float d = 4 * std::max({dot(abs(n), p_error), gamma(3) * scale, 1e-20f});
     const Vec3 side = dot(w, n) < 0 ? -n : n;
     Vec3 po = p + side * d;
     // The addition rounds too: step each coordinate one float further along the normal.

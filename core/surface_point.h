@@ -43,7 +43,7 @@ Vec3 smooth_surface_point(Vec3 p, const Vec3 v[3], const Vec3 n[3], const float 
 Vec3 offset_ray_origin(Vec3 p, Vec3 ng, Vec3 w);
 
 // p moved along n, to the side w points to, just past the error box p_error (times a
-// safety factor of 2), then rounded away from p (pbrt-v4's OffsetRayOrigin): a ray from
+// safety factor of 4), then rounded away from p (pbrt-v4's OffsetRayOrigin): a ray from
 // there cannot hit the surface it leaves, and the offset is a few ULPs of the
 // coordinates along n only, so contact shadows stay put far from the origin.
 Vec3 offset_ray_origin(Vec3 p, Vec3 p_error, Vec3 n, Vec3 w);
