@@ -23,15 +23,10 @@ if [ -d "$shared/scenes/khronos" ]; then seed_dirs+=("$shared/scenes/khronos"); 
 python3 fuzz/make_seeds.py "$corpus" "${seed_dirs[@]}"
 mkdir -p "$artifacts"
 
-if [ -x /usr/lib/llvm-14/bin/llvm-symbolizer ]; then
-    export ASAN_SYMBOLIZER_PATH=/usr/lib/llvm-14/bin/llvm-symbolizer
-fi
 # Full malloc stacks: the suppressions name frames inside libraries built without frame
 # pointers, which the fast unwinder never reaches.
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:halt_on_error=1:fast_unwind_on_malloc=0}"
-export UBSAN_OPTIONS="${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}"
-# Leaks inside third-party libraries that are not ours to fix (see the file).
-export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$PWD/fuzz/lsan.supp:print_suppressions=0}"
+source scripts/sanitizer_env.sh
 log="$artifacts/fuzz.log"
 status=0
 "$build_dir/bin/gltf_loader_fuzzer" "$corpus" -max_total_time="$seconds" \

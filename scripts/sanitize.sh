@@ -18,15 +18,9 @@ if [ ! -f "$build_dir/CMakeCache.txt" ]; then
 fi
 cmake --build "$build_dir" --parallel "$(nproc)"
 
-# Stack traces with file:line need llvm-symbolizer (package llvm-14).
-if [ -x /usr/lib/llvm-14/bin/llvm-symbolizer ]; then
-    export ASAN_SYMBOLIZER_PATH=/usr/lib/llvm-14/bin/llvm-symbolizer
-fi
 # The same options as the asan test preset.
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:halt_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1}"
-export UBSAN_OPTIONS="${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}"
-# Leaks inside third-party libraries that are not ours to fix (see the file).
-export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$PWD/fuzz/lsan.supp:print_suppressions=0}"
+source scripts/sanitizer_env.sh
 filter="${SANITIZE_FILTER:--*Cli.*:BundledScenes.*:MotionAccel.StaticInstancesAreUnchangedBesideMovingOnes}"
 start=$(date +%s)
 "$build_dir/bin/penumbra_tests" --gtest_filter="$filter" --gtest_brief=1
