@@ -160,6 +160,10 @@ TEST(MotionAccel, StaticInstancesAreUnchangedBesideMovingOnes) {
         for (const CheckRay& r : rays) {
             const auto ha = a->intersect(r.ray);
             const auto hb = b->intersect(r.ray);
+            // A random ray may well reach the moving cube itself (1 in 20,000 with the
+            // clang build's rounding of the rays): not a static answer to compare.
+            if (hb && hb->instance == i) continue;
+            // Static instances keep the static code path: the very same answers.
             ASSERT_EQ(ha.has_value(), hb.has_value()) << name;
             if (ha) {
                 EXPECT_EQ(ha->t, hb->t);
