@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages penumbra needs to build, test and run. Idempotent:
-# packages already present are skipped, and apt is not touched when nothing is missing.
-# Runs apt-get directly as root, through sudo otherwise. clang with its sanitizer and
-# libFuzzer runtimes (libclang-rt-14-dev) and llvm-symbolizer (llvm-14) are for the asan
-# preset: scripts/sanitize.sh and scripts/fuzz.sh.
+# Installs the Debian 12 packages penumbra needs to build and run; with --test, also
+# those only the tests need. Idempotent: packages already present are skipped, and apt
+# is not touched when nothing is missing. Runs apt-get directly as root, through sudo
+# otherwise.
 set -euo pipefail
 
 packages=(
@@ -12,8 +11,18 @@ packages=(
     libopenimageio-dev openimageio-tools libopencolorio-dev
     libtinygltf-dev nlohmann-json3-dev libstb-dev
     libcli11-dev libgtest-dev libbenchmark-dev
-    clang libclang-rt-14-dev llvm-14
 )
+if [ "${1:-}" = "--test" ]; then
+    packages+=(
+        # The asan preset (scripts/sanitize.sh, scripts/fuzz.sh): clang with its sanitizer
+        # and libFuzzer runtimes, and llvm-symbolizer for readable reports.
+        clang libclang-rt-14-dev llvm-14
+        # A real studio OCIO config (blender-data's config.ocio) and Blender itself, whose
+        # compositor must read our AOV EXRs (tests/io/color_test.cpp,
+        # tests/apps/blender_roundtrip_test.cpp).
+        blender blender-data
+    )
+fi
 
 missing=()
 for p in "${packages[@]}"; do

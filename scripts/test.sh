@@ -4,7 +4,7 @@
 # scripts/fuzz.sh). PENUMBRA_SANITIZE=0 skips the last two (a quicker local run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh
+scripts/setup.sh --test
 scripts/build.sh
 ctest --test-dir build --output-on-failure --parallel "$(nproc)" "$@"
 if [ "${PENUMBRA_SANITIZE:-1}" != 0 ]; then
