@@ -106,17 +106,15 @@ TEST(BsdfRobustness, GrazingAndBelowTheSurfaceStayFiniteAndConserveEnergy) {
 }
 
 // alpha 1e-4 is too narrow to bin over the sphere: the half-vector chi-square bins it
-// by its microfacet normal (support/bsdf_properties.h). Not at grazing wo: at cos 0.02
-// the test's own half vector, normalize(wo + wi), loses a few percent of alpha to float
-// cancellation, and GGX and Beckmann, conductor and dielectric alike, fail at p ~ 1e-3
-// to 1e-5 there (open question: the binning or the models; see the issue notes).
+// by its microfacet normal (support/bsdf_properties.h), down to grazing wo (cos 0.02),
+// where that binning would resolve wi's float grid unless it dithers the samples.
 TEST(BsdfRobustness, NarrowestLobesStillFollowTheirPdf) {
     test::BsdfChi2Options o;
     o.samples = 100000;
-    o.significance = test::sidak_significance(0.01, 8);
+    o.significance = test::sidak_significance(0.01, 12);
     int seed = 900;
     for (MicrofacetType type : {MicrofacetType::Ggx, MicrofacetType::Beckmann})
-        for (float cos_o : {0.8f, 0.2f}) {
+        for (float cos_o : {0.8f, 0.2f, 0.02f}) {
             o.seed = ++seed;
             const ConductorBsdf conductor(Metal::Gold, type, 1e-4f);
             const Vec3 wo = spherical_direction(cos_o, 1.1f);

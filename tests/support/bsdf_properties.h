@@ -22,6 +22,8 @@ Chi2Result bsdf_chi2_sphere(const Bsdf& bsdf, Vec3 wo, const BsdfChi2Options& op
 // half vector of refraction, Walter et al. 2007, eq. 16, with relative IOR eta; eta 0:
 // reflection only, and a transmitted sample fails). The expected density is pdf()
 // times the Jacobians of wi -> h -> the disk, computed here independently of the BSDF.
+// Each sampled wi is binned as a uniform point of its float rounding box, since at
+// grazing wo the disk is fine enough to resolve wi's float grid (alpha 1e-4).
 Chi2Result bsdf_chi2_half_vector(const Bsdf& bsdf, Vec3 wo, float alpha, float eta,
                                  const BsdfChi2Options& options,
                                  Transport mode = Transport::Radiance);
