@@ -163,8 +163,9 @@ TEST(BsdfRobustness, RoughnessToZeroConvergesToTheMirror) {
         EXPECT_LT(spread, 4 * alpha) << alpha;
         EXPECT_LT(spread, prev_spread) << alpha;
         prev_spread = float(spread);
-        if (alpha <= 1e-3f)
+        if (alpha <= 1e-3f) {
             for (int c = 0; c < 3; ++c) EXPECT_NEAR(albedo[c], F[c], 0.01f * F[c]) << alpha;
+        }
     }
 }
 
