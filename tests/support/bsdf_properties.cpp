@@ -144,6 +144,7 @@ Chi2Result bsdf_chi2_half_vector(const Bsdf& bsdf, Vec3 wo, float alpha, float e
         return s.str();
     });
     r.pdf_integral = integral;
+    check_pdf_integral(r, integral);
     r.lost = static_cast<uint64_t>(observed[cells]);
     r.invalid += bad;
     if (bad > 0) {

@@ -130,6 +130,12 @@ Chi2Result chi2_compare(const std::vector<double>& observed, const std::vector<d
     return r;
 }
 
+void check_pdf_integral(Chi2Result& r, double integral) {
+    if (integral <= 1 + kPdfIntegralTolerance) return;
+    r.passed = false;
+    r.report = format("the pdf integrates to %.6f > 1\n", integral, 0, 0, 0) + r.report;
+}
+
 Chi2Result chi2_sphere(const DirectionSampler& sample, const DirectionPdf& pdf,
                        const SphereChi2Options& o) {
     const int nz = o.cos_bins, nphi = o.phi_bins;
@@ -181,6 +187,7 @@ Chi2Result chi2_sphere(const DirectionSampler& sample, const DirectionPdf& pdf,
         return format("cos [%+.2f, %+.2f] phi [%.2f, %.2f]", z0, z0 + dz, phi0, phi0 + dphi);
     });
     r.pdf_integral = integral;
+    check_pdf_integral(r, integral);
     r.lost = static_cast<uint64_t>(observed[cells]);
     r.invalid += bad;
     if (bad > 0) {
@@ -236,6 +243,7 @@ Chi2Result chi2_planar(const PointSampler& sample, const PointPdf& pdf,
         return format("x [%+.3f, %+.3f] y [%+.3f, %+.3f]", x0, x0 + dx, y0, y0 + dy);
     });
     r.pdf_integral = integral;
+    check_pdf_integral(r, integral);
     r.lost = static_cast<uint64_t>(observed[cells]);
     r.invalid += bad;
     if (bad > 0) {

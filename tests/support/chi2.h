@@ -43,6 +43,13 @@ Chi2Result chi2_compare(const std::vector<double>& observed, const std::vector<d
                         uint64_t samples, double significance,
                         const std::function<std::string(size_t)>& cell_name);
 
+// A density integrates to at most 1 (the rest is the chance of no sample). The
+// "no sample" cell's expected count is clamped at 0, so a pdf too large everywhere by a
+// few percent would pass the statistic almost unnoticed; this fails r outright when
+// the integral exceeds 1 by more than the quadrature's tolerance.
+constexpr double kPdfIntegralTolerance = 1e-3;
+void check_pdf_integral(Chi2Result& r, double integral);
+
 // Directions: cells uniform in (cos theta, phi), so all have equal solid angle.
 struct SphereChi2Options {
     bool hemisphere = false;  // z in [0, 1] instead of [-1, 1]

@@ -51,6 +51,19 @@ TEST(Chi2, UniformDensityForCosineSamplesFails) {
     EXPECT_NE(r.report.find("worst cells"), std::string::npos);
 }
 
+// A pdf 3% too large everywhere: the statistic alone barely notices (the "no sample"
+// cell's expectation is clamped at 0), the integral check does.
+TEST(Chi2, PdfThatIntegratesAboveOneFails) {
+    SphereChi2Options o;
+    o.hemisphere = true;
+    const Chi2Result r = chi2_sphere(
+        [](Rng& rng) { return std::optional<Vec3>(square_to_cosine_hemisphere(next_2d(rng))); },
+        [](Vec3 w) { return 1.03 * double(cosine_hemisphere_pdf(w)); }, o);
+    EXPECT_NEAR(r.pdf_integral, 1.03, 1e-5);
+    EXPECT_FALSE(r.passed) << r.report;
+    EXPECT_NE(r.report.find("integrates to"), std::string::npos) << r.report;
+}
+
 TEST(Chi2, SlightlyWrongExponentFails) {
     // Samples from cos^1 against the normalized cos^1.2 lobe: a subtle error.
     SphereChi2Options o;
