@@ -71,13 +71,7 @@ InstanceLevel::InstanceLevel(const Scene& scene, const std::vector<Bounds3>& obj
 Ray InstanceLevel::moving_object_ray(const Record& rec, const Ray& ray) const {
     double m[3][4];
     invert_affine(motion_matrix_at(m_motion[rec.motion], ray.time), m);
-    Ray r = ray;
-    for (int i = 0; i < 3; ++i) {
-        r.o[i] = static_cast<float>(m[i][0] * ray.o.x + m[i][1] * ray.o.y + m[i][2] * ray.o.z +
-                                    m[i][3]);
-        r.d[i] = static_cast<float>(m[i][0] * ray.d.x + m[i][1] * ray.d.y + m[i][2] * ray.d.z);
-    }
-    return r;
+    return transform_ray(m, ray);
 }
 
 }  // namespace penumbra

@@ -63,7 +63,10 @@ private:
     };
     Ray object_ray(const Record& rec, const Ray& ray) const {
         if (rec.motion != kStatic) return moving_object_ray(rec, ray);
-        const auto& m = rec.to_object;
+        return transform_ray(rec.to_object, ray);
+    }
+    // The ray through the rows of an affine world-to-object map, in double, rounded once.
+    static Ray transform_ray(const double (&m)[3][4], const Ray& ray) {
         Ray r = ray;
         for (int i = 0; i < 3; ++i) {
             r.o[i] = static_cast<float>(m[i][0] * ray.o.x + m[i][1] * ray.o.y + m[i][2] * ray.o.z +
