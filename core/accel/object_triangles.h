@@ -53,6 +53,14 @@ struct ObjectTriangles {
         return verts.capacity() * sizeof(Vec3) + ids.capacity() * sizeof(TriangleId) +
                motion.capacity() * sizeof(TriangleMotion) + motion_verts.capacity() * sizeof(Vec3);
     }
+    // A hit on triangle i as every accelerator reports it (all but the instance).
+    void record_hit(const TriangleHit& th, uint32_t i, Hit* hit) const {
+        hit->t = th.t;
+        hit->b1 = th.b1;
+        hit->b2 = th.b2;
+        hit->mesh = ids[i].mesh;
+        hit->prim = ids[i].prim;
+    }
     // Closest hit among triangles [first, first + count) in [tmin, *tmax]; on a hit,
     // shrinks *tmax and fills *hit (all but the instance).
     bool intersect(const TrianglePrecomp& r, uint32_t first, uint32_t count, float tmin,
@@ -63,11 +71,7 @@ struct ObjectTriangles {
             if (intersect_triangle(r, verts[3 * i], verts[3 * i + 1], verts[3 * i + 2], tmin, *tmax,
                                    &th)) {
                 *tmax = th.t;
-                hit->t = th.t;
-                hit->b1 = th.b1;
-                hit->b2 = th.b2;
-                hit->mesh = ids[i].mesh;
-                hit->prim = ids[i].prim;
+                record_hit(th, i, hit);
                 found = true;
             }
         }
@@ -93,11 +97,7 @@ struct ObjectTriangles {
             TriangleHit th;
             if (intersect_triangle(r, p[0], p[1], p[2], tmin, *tmax, &th)) {
                 *tmax = th.t;
-                hit->t = th.t;
-                hit->b1 = th.b1;
-                hit->b2 = th.b2;
-                hit->mesh = ids[i].mesh;
-                hit->prim = ids[i].prim;
+                record_hit(th, i, hit);
                 found = true;
             }
         }
