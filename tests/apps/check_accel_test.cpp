@@ -1,35 +1,26 @@
 // End-to-end tests of `penumbra check-accel`.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
-#include <memory>
+#include <sstream>
 #include <string>
+#include <vector>
 
+#include "support/cli_process.h"
 #include "support/paths.h"
 
 namespace penumbra {
 namespace {
 
-struct Result {
-    int status;
-    std::string output;
-};
-
-Result run_penumbra(const std::string& args) {
-    const std::string cmd = test::binary_path("bin/penumbra") + " " + args + " 2>&1";
-    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
-    std::string out;
-    std::array<char, 4096> buf;
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), pipe.get())) > 0) out.append(buf.data(), n);
-    const int raw = pclose(pipe.release());
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+// penumbra with a whitespace-separated argument string (no argument here has spaces).
+test::CliResult run_penumbra(const std::string& args) {
+    std::istringstream in(args);
+    std::vector<std::string> argv;
+    for (std::string a; in >> a;) argv.push_back(a);
+    return test::run_penumbra(argv);
 }
 
 TEST(CheckAccelCli, CornellBoxPassesAndReportsEveryAccelerator) {
-    const Result r = run_penumbra("check-accel " + test::source_path("scenes/cornell-box.gltf") +
+    const test::CliResult r = run_penumbra("check-accel " + test::source_path("scenes/cornell-box.gltf") +
                                   " --rays 5000 --width 48 --images --spp 1");
     ASSERT_EQ(r.status, 0) << r.output;
     for (const char* name : {"embree", "bvh-sah", "bvh-median", "bvh-center", "grid"})
@@ -44,10 +35,10 @@ TEST(CheckAccelCli, CornellBoxPassesAndReportsEveryAccelerator) {
 // default ray counts (365,536 rays; on instances.gltf Embree's float instance transform
 // loses a few edge cases that double precision gives to our BVH, which are not counted).
 TEST(CheckAccelCli, InstancedAndMovingScenesPass) {
-    const Result inst = run_penumbra("check-accel " + test::source_path("scenes/instances.gltf"));
+    const test::CliResult inst = run_penumbra("check-accel " + test::source_path("scenes/instances.gltf"));
     ASSERT_EQ(inst.status, 0) << inst.output;
     EXPECT_NE(inst.output.find("PASS"), std::string::npos);
-    const Result moving = run_penumbra("check-accel " + test::source_path("scenes/motion-blur.gltf") +
+    const test::CliResult moving = run_penumbra("check-accel " + test::source_path("scenes/motion-blur.gltf") +
                                        " --shutter-open 0.5 --shutter-close 1 --rays 40000");
     ASSERT_EQ(moving.status, 0) << moving.output;
     EXPECT_NE(moving.output.find("PASS"), std::string::npos);

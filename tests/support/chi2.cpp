@@ -136,6 +136,24 @@ void check_pdf_integral(Chi2Result& r, double integral) {
     r.report = format("the pdf integrates to %.6f > 1\n", integral, 0, 0, 0) + r.report;
 }
 
+namespace {
+
+// The common end of the domain tests: the integral check, the lost and invalid counts
+// (any invalid sample fails), and the report's first line.
+void finish(Chi2Result& r, double integral, double lost, uint64_t bad, const char* what_bad) {
+    r.pdf_integral = integral;
+    check_pdf_integral(r, integral);
+    r.lost = static_cast<uint64_t>(lost);
+    r.invalid += bad;
+    if (bad > 0) {
+        r.passed = false;
+        r.report = std::to_string(bad) + " " + what_bad + "\n" + r.report;
+    }
+    r.report = format("pdf integral = %.6f, no sample = %.0f\n", integral, lost, 0, 0) + r.report;
+}
+
+}  // namespace
+
 Chi2Result chi2_sphere(const DirectionSampler& sample, const DirectionPdf& pdf,
                        const SphereChi2Options& o) {
     const int nz = o.cos_bins, nphi = o.phi_bins;
@@ -186,17 +204,7 @@ Chi2Result chi2_sphere(const DirectionSampler& sample, const DirectionPdf& pdf,
         const double z0 = z_lo + (i / nphi) * dz, phi0 = (i % nphi) * dphi;
         return format("cos [%+.2f, %+.2f] phi [%.2f, %.2f]", z0, z0 + dz, phi0, phi0 + dphi);
     });
-    r.pdf_integral = integral;
-    check_pdf_integral(r, integral);
-    r.lost = static_cast<uint64_t>(observed[cells]);
-    r.invalid += bad;
-    if (bad > 0) {
-        r.passed = false;
-        r.report = std::to_string(bad) + " samples were NaN, not unit length or off the " +
-                   "domain\n" + r.report;
-    }
-    r.report = format("pdf integral = %.6f, no sample = %.0f\n", integral, observed[cells], 0, 0) +
-               r.report;
+    finish(r, integral, observed[cells], bad, "samples were NaN, not unit length or off the domain");
     return r;
 }
 
@@ -242,16 +250,7 @@ Chi2Result chi2_planar(const PointSampler& sample, const PointPdf& pdf,
         const double x0 = o.lo.x + (i % nx) * dx, y0 = o.lo.y + (i / nx) * dy;
         return format("x [%+.3f, %+.3f] y [%+.3f, %+.3f]", x0, x0 + dx, y0, y0 + dy);
     });
-    r.pdf_integral = integral;
-    check_pdf_integral(r, integral);
-    r.lost = static_cast<uint64_t>(observed[cells]);
-    r.invalid += bad;
-    if (bad > 0) {
-        r.passed = false;
-        r.report = std::to_string(bad) + " samples were NaN or outside the rectangle\n" + r.report;
-    }
-    r.report = format("pdf integral = %.6f, no sample = %.0f\n", integral, observed[cells], 0, 0) +
-               r.report;
+    finish(r, integral, observed[cells], bad, "samples were NaN or outside the rectangle");
     return r;
 }
 
