@@ -58,6 +58,70 @@ struct MaterialDesc {
     // dielectric instead of diffuse; the texture's R channel scales the factor.
     float transmission = 0;
     TextureRef transmission_texture;
+    // KHR_materials_specular textures: A scales specularFactor, RGB (sRGB) the colour.
+    TextureRef specular_texture;
+    TextureRef specular_color_texture;
+
+    // KHR_materials_clearcoat: a second GGX lobe (IOR 1.5) over everything else, with its
+    // own roughness and normal map. Textures: clearcoat R, roughness G.
+    float clearcoat = 0;
+    TextureRef clearcoat_texture;
+    float clearcoat_roughness = 0;
+    TextureRef clearcoat_roughness_texture;
+    TextureRef clearcoat_normal_texture;
+    float clearcoat_normal_scale = 1;
+
+    // KHR_materials_sheen: Charlie sheen over the base. Colour texture RGB (sRGB),
+    // roughness texture A.
+    Spectrum sheen_color{0, 0, 0};
+    TextureRef sheen_color_texture;
+    float sheen_roughness = 0;
+    TextureRef sheen_roughness_texture;
+
+    // KHR_materials_volume: the inside of a closed mesh is a homogeneous absorbing medium
+    // (Beer-Lambert with attenuation_color reached at attenuation_distance). thickness 0:
+    // thin-walled (no medium). Thickness texture G.
+    float thickness = 0;
+    TextureRef thickness_texture;
+    float attenuation_distance = INFINITY;
+    Spectrum attenuation_color{1, 1, 1};
+
+    // KHR_materials_iridescence: a thin film (Belcour & Barla 2017) over the base.
+    // Factor texture R, thickness texture G (mixes thickness min to max, in nm).
+    float iridescence = 0;
+    TextureRef iridescence_texture;
+    float iridescence_ior = 1.3f;
+    float iridescence_thickness_min = 100;
+    float iridescence_thickness_max = 400;
+    TextureRef iridescence_thickness_texture;
+
+    // KHR_materials_anisotropy: strength in [0, 1], rotation (radians, counter-clockwise
+    // from the tangent); texture RG: direction in tangent space ([0,1] -> [-1,1]), B:
+    // strength.
+    float anisotropy_strength = 0;
+    float anisotropy_rotation = 0;
+    TextureRef anisotropy_texture;
+
+    // KHR_materials_dispersion: 20 / Abbe number; 0 is no dispersion.
+    float dispersion = 0;
+
+    // KHR_materials_diffuse_transmission: the share of the diffuse base that is
+    // transmitted (Lambertian, to the other side). Factor texture A, colour texture RGB
+    // (sRGB).
+    float diffuse_transmission = 0;
+    TextureRef diffuse_transmission_texture;
+    Spectrum diffuse_transmission_color{1, 1, 1};
+    TextureRef diffuse_transmission_color_texture;
+
+    // KHR_materials_unlit: the surface shows base colour (factor x texture x vertex
+    // colour) as emitted radiance and reflects nothing.
+    bool unlit = false;
+
+    // KHR_materials_pbrSpecularGlossiness (archived): base_color/_texture hold the diffuse
+    // colour, specular_color the f0 colour (f90 1), roughness 1 - glossiness; the texture
+    // is RGB specular (sRGB), A glossiness. metallic is 0.
+    bool specular_glossiness = false;
+    TextureRef specular_glossiness_texture;
 
     bool is_emissive() const { return !is_black(emissive) && emissive_strength > 0; }
 };
