@@ -5,6 +5,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 generator=()
 if command -v ninja >/dev/null 2>&1; then generator=(-G Ninja); fi
+# ccache, when a developer has it, shares compiled objects between checkouts.
+if command -v ccache >/dev/null 2>&1; then
+    generator+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+    export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$(cd .. && pwd)}"
+fi
 if [ ! -f build/CMakeCache.txt ]; then
     cmake -S . -B build "${generator[@]}" -DCMAKE_BUILD_TYPE=Release "$@"
 else
