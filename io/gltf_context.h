@@ -18,6 +18,7 @@ struct GltfContext {
     const tinygltf::Model& model;
     std::string file;  // as the caller named it; prefixes every message
     Mat3 rec709_to_working = Mat3::identity();  // for light colours (scene_color.h)
+    int variant = -1;  // KHR_materials_variants index chosen; -1: default materials
 
     // Throws SceneError "<file>: <element>: <problem>".
     [[noreturn]] void fail(const std::string& element, const std::string& problem) const {

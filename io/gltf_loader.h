@@ -20,6 +20,9 @@ struct GltfLoadOptions {
     // Equal values are a still at that time; both 0 (the default) is the file's pose at
     // time 0, which for a file without animations is its nodes' own transforms.
     double shutter_open = 0, shutter_close = 0;
+    // KHR_materials_variants: the variant whose materials primitives use where they map
+    // one; empty: every primitive's default material. An unknown name is a SceneError.
+    std::string variant = "";
 };
 
 // Loads the file at path; throws SceneError for bad input, including a shutter that
