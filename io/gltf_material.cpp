@@ -23,11 +23,12 @@ Vec3 vec3(const GltfContext& ctx, const std::string& el, const char* key,
 // allows it: f0 is clamped after the IOR's value is applied).
 void load_specular(const GltfContext& ctx, const tinygltf::Material& gm, const std::string& el,
                    TextureTable& textures, MaterialDesc& d) {
-    const tinygltf::Value& spec = extension_object(ctx, el, gm.extensions, "KHR_materials_specular");
+    const tinygltf::Value& spec = extension_object(gm.extensions, "KHR_materials_specular");
     const std::string sel = el + ".extensions.KHR_materials_specular";
     d.specular = json_number(ctx, sel, spec, "specularFactor", 1.0f, kUnit);
     d.specular_texture = textures.json_ref(sel, spec, "specularTexture", ImageEncoding::Linear);
-    d.specular_color = json_vec3(ctx, sel, spec, "specularColorFactor", d.specular_color, kNonNegative);
+    d.specular_color =
+        json_vec3(ctx, sel, spec, "specularColorFactor", d.specular_color, kNonNegative);
     d.specular_color_texture =
         textures.json_ref(sel, spec, "specularColorTexture", ImageEncoding::Srgb);
 }
@@ -40,7 +41,7 @@ void load_specular(const GltfContext& ctx, const tinygltf::Material& gm, const s
 void load_specular_glossiness(const GltfContext& ctx, const tinygltf::Material& gm,
                               const std::string& el, TextureTable& textures, MaterialDesc& d) {
     const tinygltf::Value& sg =
-        extension_object(ctx, el, gm.extensions, "KHR_materials_pbrSpecularGlossiness");
+        extension_object(gm.extensions, "KHR_materials_pbrSpecularGlossiness");
     if (!sg.IsObject()) return;
     const std::string gel = el + ".extensions.KHR_materials_pbrSpecularGlossiness";
     d.specular_glossiness = true;
@@ -66,10 +67,9 @@ MaterialDesc load_material(const GltfContext& ctx, size_t i, TextureTable& textu
     const std::string pel = el + ".pbrMetallicRoughness";
     if (pbr.baseColorFactor.size() != 4) ctx.fail(pel, "baseColorFactor must have 4 numbers");
     for (int c = 0; c < 4; ++c) d.base_color[c] = float(pbr.baseColorFactor[size_t(c)]);
-    d.base_color_texture =
-        textures.ref(pel + ".baseColorTexture", pbr.baseColorTexture.index,
-                     pbr.baseColorTexture.texCoord, ImageEncoding::Srgb,
-                     pbr.baseColorTexture.extensions);
+    d.base_color_texture = textures.ref(pel + ".baseColorTexture", pbr.baseColorTexture.index,
+                                        pbr.baseColorTexture.texCoord, ImageEncoding::Srgb,
+                                        pbr.baseColorTexture.extensions);
     d.metallic = float(pbr.metallicFactor);
     d.roughness = float(pbr.roughnessFactor);
     d.metallic_roughness_texture =
@@ -77,9 +77,9 @@ MaterialDesc load_material(const GltfContext& ctx, size_t i, TextureTable& textu
                      pbr.metallicRoughnessTexture.texCoord, ImageEncoding::Linear,
                      pbr.metallicRoughnessTexture.extensions);
 
-    d.normal_texture = textures.ref(el + ".normalTexture", gm.normalTexture.index,
-                                    gm.normalTexture.texCoord, ImageEncoding::Linear,
-                                    gm.normalTexture.extensions);
+    d.normal_texture =
+        textures.ref(el + ".normalTexture", gm.normalTexture.index, gm.normalTexture.texCoord,
+                     ImageEncoding::Linear, gm.normalTexture.extensions);
     d.normal_scale = float(gm.normalTexture.scale);
     d.occlusion_texture = textures.ref(el + ".occlusionTexture", gm.occlusionTexture.index,
                                        gm.occlusionTexture.texCoord, ImageEncoding::Linear,
@@ -87,9 +87,9 @@ MaterialDesc load_material(const GltfContext& ctx, size_t i, TextureTable& textu
     d.occlusion_strength = float(gm.occlusionTexture.strength);
     // tinygltf leaves emissiveFactor empty when the file omits it (default black).
     if (!gm.emissiveFactor.empty()) d.emissive = vec3(ctx, el, "emissiveFactor", gm.emissiveFactor);
-    d.emissive_texture = textures.ref(el + ".emissiveTexture", gm.emissiveTexture.index,
-                                      gm.emissiveTexture.texCoord, ImageEncoding::Srgb,
-                                      gm.emissiveTexture.extensions);
+    d.emissive_texture =
+        textures.ref(el + ".emissiveTexture", gm.emissiveTexture.index, gm.emissiveTexture.texCoord,
+                     ImageEncoding::Srgb, gm.emissiveTexture.extensions);
 
     if (gm.alphaMode == "OPAQUE")
         d.alpha_mode = AlphaMode::Opaque;
@@ -104,21 +104,21 @@ MaterialDesc load_material(const GltfContext& ctx, size_t i, TextureTable& textu
 
     const std::string xel = el + ".extensions.";
     const tinygltf::Value& strength =
-        extension_object(ctx, el, gm.extensions, "KHR_materials_emissive_strength");
+        extension_object(gm.extensions, "KHR_materials_emissive_strength");
     d.emissive_strength = json_number(ctx, xel + "KHR_materials_emissive_strength", strength,
                                       "emissiveStrength", 1.0f, kNonNegative);
     d.ior = json_number(ctx, xel + "KHR_materials_ior",
-                        extension_object(ctx, el, gm.extensions, "KHR_materials_ior"), "ior", 1.5f);
+                        extension_object(gm.extensions, "KHR_materials_ior"), "ior", 1.5f);
     load_specular(ctx, gm, el, textures, d);
 
-    const tinygltf::Value& tr = extension_object(ctx, el, gm.extensions, "KHR_materials_transmission");
+    const tinygltf::Value& tr = extension_object(gm.extensions, "KHR_materials_transmission");
     const std::string tel = xel + "KHR_materials_transmission";
     d.transmission = json_number(ctx, tel, tr, "transmissionFactor", 0.0f, kUnit);
     d.transmission_texture =
         textures.json_ref(tel, tr, "transmissionTexture", ImageEncoding::Linear);
 
     // KHR_materials_unlit has no properties: its presence is the whole statement.
-    d.unlit = extension_object(ctx, el, gm.extensions, "KHR_materials_unlit").IsObject();
+    d.unlit = extension_object(gm.extensions, "KHR_materials_unlit").IsObject();
     load_specular_glossiness(ctx, gm, el, textures, d);
     load_material_extensions(ctx, gm, el, textures, d);
     return d;

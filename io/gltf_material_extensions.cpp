@@ -19,9 +19,8 @@ struct Extension {
     std::string el;
 };
 
-Extension find(const GltfContext& ctx, const tinygltf::Material& gm, const std::string& el,
-               const char* name) {
-    return {extension_object(ctx, el, gm.extensions, name), el + ".extensions." + name};
+Extension find(const tinygltf::Material& gm, const std::string& el, const char* name) {
+    return {extension_object(gm.extensions, name), el + ".extensions." + name};
 }
 
 void clearcoat(const GltfContext& ctx, const Extension& x, TextureTable& t, MaterialDesc& d) {
@@ -89,15 +88,14 @@ void diffuse_transmission(const GltfContext& ctx, const Extension& x, TextureTab
 
 void load_material_extensions(const GltfContext& ctx, const tinygltf::Material& gm,
                               const std::string& el, TextureTable& textures, MaterialDesc& d) {
-    clearcoat(ctx, find(ctx, gm, el, "KHR_materials_clearcoat"), textures, d);
-    sheen(ctx, find(ctx, gm, el, "KHR_materials_sheen"), textures, d);
-    volume(ctx, find(ctx, gm, el, "KHR_materials_volume"), textures, d);
-    iridescence(ctx, find(ctx, gm, el, "KHR_materials_iridescence"), textures, d);
-    anisotropy(ctx, find(ctx, gm, el, "KHR_materials_anisotropy"), textures, d);
-    diffuse_transmission(ctx, find(ctx, gm, el, "KHR_materials_diffuse_transmission"),
-                         textures, d);
+    clearcoat(ctx, find(gm, el, "KHR_materials_clearcoat"), textures, d);
+    sheen(ctx, find(gm, el, "KHR_materials_sheen"), textures, d);
+    volume(ctx, find(gm, el, "KHR_materials_volume"), textures, d);
+    iridescence(ctx, find(gm, el, "KHR_materials_iridescence"), textures, d);
+    anisotropy(ctx, find(gm, el, "KHR_materials_anisotropy"), textures, d);
+    diffuse_transmission(ctx, find(gm, el, "KHR_materials_diffuse_transmission"), textures, d);
     // KHR_materials_dispersion: 20 / V_d (Abbe number); 0 is none.
-    const Extension disp = find(ctx, gm, el, "KHR_materials_dispersion");
+    const Extension disp = find(gm, el, "KHR_materials_dispersion");
     d.dispersion = json_number(ctx, disp.el, disp.obj, "dispersion", 0.0f, kNonNegative);
 }
 

@@ -21,8 +21,10 @@ struct JsonRange {
     std::string text() const {
         std::ostringstream s;
         auto bound = [&](float b) {
-            if (std::isinf(b)) s << (b > 0 ? "+inf" : "-inf");
-            else s << b;
+            if (std::isinf(b))
+                s << (b > 0 ? "+inf" : "-inf");
+            else
+                s << b;
         };
         s << (open_low ? "(" : "[");
         bound(lo);
@@ -37,23 +39,18 @@ inline constexpr JsonRange kUnit{0, 1};
 inline constexpr JsonRange kNonNegative{0, INFINITY};
 inline constexpr JsonRange kAnyFinite{};
 
-// The extension object `name` in `extensions`, or a null Value when absent; throws when
-// present but not a JSON object.
-inline const tinygltf::Value& extension_object(const GltfContext& ctx, const std::string& el,
-                                               const tinygltf::ExtensionMap& extensions,
+// The extension object `name` in `extensions`, or a null Value when absent. tinygltf
+// keeps only extension values that are JSON objects (it drops others unreported).
+inline const tinygltf::Value& extension_object(const tinygltf::ExtensionMap& extensions,
                                                const char* name) {
     static const tinygltf::Value none;
     const auto it = extensions.find(name);
-    if (it == extensions.end()) return none;
-    if (!it->second.IsObject())
-        ctx.fail(el + ".extensions." + name, "must be a JSON object");
-    return it->second;
+    return it == extensions.end() ? none : it->second;
 }
 
 // An optional number of `obj`; throws when it is not a number or lies outside `range`.
-inline float json_number(const GltfContext& ctx, const std::string& el,
-                         const tinygltf::Value& obj, const char* key, float fallback,
-                         JsonRange range = kAnyFinite) {
+inline float json_number(const GltfContext& ctx, const std::string& el, const tinygltf::Value& obj,
+                         const char* key, float fallback, JsonRange range = kAnyFinite) {
     if (!obj.Has(key)) return fallback;
     const tinygltf::Value& v = obj.Get(key);
     if (!v.IsNumber()) ctx.fail(el, std::string(key) + " is not a number");
@@ -67,9 +64,8 @@ inline float json_number(const GltfContext& ctx, const std::string& el,
 }
 
 // An optional array of `n` numbers of `obj`, each inside `range`, into out[0..n).
-inline void json_numbers(const GltfContext& ctx, const std::string& el,
-                         const tinygltf::Value& obj, const char* key, int n, float* out,
-                         JsonRange range = kAnyFinite) {
+inline void json_numbers(const GltfContext& ctx, const std::string& el, const tinygltf::Value& obj,
+                         const char* key, int n, float* out, JsonRange range = kAnyFinite) {
     if (!obj.Has(key)) return;
     const tinygltf::Value& v = obj.Get(key);
     const std::string expected = std::string(key) + " must have " + std::to_string(n) + " numbers";

@@ -60,7 +60,11 @@ TextureRef TextureTable::json_ref(const std::string& el, const tinygltf::Value& 
     tinygltf::ExtensionMap extensions;
     if (info.Has("extensions") && info.Get("extensions").Has("KHR_texture_transform"))
         extensions["KHR_texture_transform"] = info.Get("extensions").Get("KHR_texture_transform");
-    return ref(tel, info.Get("index").GetNumberAsInt(), texcoord, encoding, extensions);
+    const int index = info.Get("index").GetNumberAsInt();
+    // ref() takes -1 as tinygltf's "absent"; written in the file, it is a bad index.
+    if (index < 0)
+        m_ctx.check_index(tel, "texture", index, m_ctx.model.textures.size(), "textures");
+    return ref(tel, index, texcoord, encoding, extensions);
 }
 
 int TextureTable::texture_index(int index, ImageEncoding encoding) {
@@ -88,7 +92,7 @@ int TextureTable::texture_index(int index, ImageEncoding encoding) {
 // core `source` is then only the fallback for viewers without WebP. KHR_texture_basisu
 // (KTX2) is not read, so a texture with only that source is an error.
 int TextureTable::image_source(const tinygltf::Texture& gt, const std::string& el) const {
-    const tinygltf::Value& webp = extension_object(m_ctx, el, gt.extensions, "EXT_texture_webp");
+    const tinygltf::Value& webp = extension_object(gt.extensions, "EXT_texture_webp");
     if (webp.IsObject()) {
         const std::string wel = el + ".extensions.EXT_texture_webp";
         if (!webp.Has("source") || !webp.Get("source").IsInt())
@@ -138,8 +142,8 @@ WrapMode TextureTable::wrap_mode(const std::string& el, const char* what, int mo
         case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
             return WrapMode::MirroredRepeat;
         default:
-            m_ctx.fail(el, std::string(what) + " " + std::to_string(mode) +
-                               " is not a glTF wrap mode");
+            m_ctx.fail(el,
+                       std::string(what) + " " + std::to_string(mode) + " is not a glTF wrap mode");
     }
 }
 

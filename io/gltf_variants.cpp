@@ -49,7 +49,7 @@ int find_variant(const GltfContext& ctx, const std::string& name) {
 int primitive_material(const GltfContext& ctx, const tinygltf::Primitive& prim,
                        const std::string& el) {
     const std::string xel = el + ".extensions." + kName;
-    const tinygltf::Value& ext = extension_object(ctx, el, prim.extensions, kName);
+    const tinygltf::Value& ext = extension_object(prim.extensions, kName);
     if (!ext.IsObject()) return prim.material;
     if (!ext.Has("mappings") || !ext.Get("mappings").IsArray())
         ctx.fail(xel, "mappings must be an array");
@@ -73,8 +73,9 @@ int primitive_material(const GltfContext& ctx, const tinygltf::Primitive& prim,
             // The spec lets a variant map to one material per primitive; a file that maps
             // it twice renders with the first, as the draft's lookup order had it.
             if (chosen >= 0 && chosen != material)
-                ctx.warn_once("meshes", "a material variant is mapped to several materials of "
-                                        "one primitive; using the first mapping");
+                ctx.warn_once("meshes",
+                              "a material variant is mapped to several materials of "
+                              "one primitive; using the first mapping");
             else
                 chosen = material;
         }

@@ -25,7 +25,7 @@ public:
 
     void read(JobSettings& s) const {
         static const char* const kKeys[] = {
-            "scene",  "camera", "integrator", "strategy", "sampler", "filter",  "accel",
+            "scene",  "camera", "variant", "integrator", "strategy", "sampler", "filter",  "accel",
             "output", "out_dir", "name",      "frames",   "width",   "height",  "max_depth",
             "frame",  "spp",    "seed",       "time",     "time_limit", "fps",
             "shutter", "shutter_open", "shutter_close", "ocio_config", "working_space",
@@ -40,6 +40,7 @@ public:
             }
         }
         text("camera", s.camera);
+        text("variant", s.variant);
         text("integrator", s.integrator);
         text("strategy", s.strategy);
         text("sampler", s.sampler);
