@@ -25,6 +25,7 @@ namespace {
 
 void apply(const JobSettings& s, RenderCommandOptions& o) {
     if (s.camera) o.camera = *s.camera;
+    if (s.variant) o.variant = *s.variant;
     if (s.integrator) o.integrator = *s.integrator;
     if (s.strategy) o.strategy = *s.strategy;
     if (s.sampler) o.sampler = *s.sampler;

@@ -30,6 +30,7 @@ struct RenderCommandOptions {
     int threads = 0;
     unsigned long long seed = 0;
     std::string camera;   // name or index; empty: the first camera, or a default one
+    std::string variant;  // KHR_materials_variants name; empty: default materials
     std::string integrator = "path";
     std::string strategy = "mis";
     std::string microfacet = "ggx";  // glTF specular lobes: ggx | beckmann

@@ -37,6 +37,9 @@ void add_image_options(CLI::App* cmd, RenderCommandOptions& o) {
     cmd->add_option("--camera", o.camera,
                     "Camera by name or index (default: the first camera in the file, else "
                     "one framing the whole scene)");
+    cmd->add_option("--variant", o.variant,
+                    "glTF material variant by name (KHR_materials_variants; default: the "
+                    "default materials)");
     std::string integrator_help = "Integrator:";
     std::vector<std::string> integrator_list;
     for (const auto& [name, desc] : integrator_names()) {
@@ -215,6 +218,7 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     auto t0 = Clock::now();
     GltfLoadOptions load;
     load.rec709_to_working = s->color->rec709_to_working();
+    load.variant = o.variant;
     try {
         const ShutterInterval shutter = resolve_shutter(o.timeline);
         load.shutter_open = shutter.open;
