@@ -1,0 +1,418 @@
+// Every property of the KHR material extensions (clearcoat, sheen, volume, iridescence,
+// anisotropy, dispersion, diffuse transmission, specular), unlit and specular-glossiness:
+// the specs' defaults, non-default values, each texture in its own slot with its UV set
+// and encoding (sRGB or linear), colour conversion, and the range and type errors.
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+
+#include "core/error.h"
+#include "io/color.h"
+#include "io/gltf_loader.h"
+#include "io/image_reader.h"
+#include "support/gltf_builder.h"
+
+namespace penumbra {
+namespace {
+
+using test::BufferStorage;
+using test::GltfBuilder;
+using test::ScratchDir;
+
+// The one texel of the test texture, as 8-bit codes: a linear decode gives code / 255,
+// an sRGB one srgb_to_linear(code / 255) for RGB (0.2 -> 0.0331) and code / 255 for A.
+constexpr unsigned char kTexel[4] = {51, 102, 204, 153};
+
+std::string png_uri(const ScratchDir& dir, const unsigned char* texel = kTexel) {
+    const std::string path = dir.file("t.png");
+    auto out = OIIO::ImageOutput::create(path);
+    EXPECT_TRUE(out && out->open(path, OIIO::ImageSpec(1, 1, 4, OIIO::TypeDesc::UINT8)));
+    out->write_image(OIIO::TypeDesc::UINT8, texel);
+    out->close();
+    std::ifstream f(path, std::ios::binary);
+    const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(f),
+                                     std::istreambuf_iterator<char>()};
+    return "data:image/png;base64," + test::base64(bytes);
+}
+
+// A textureInfo tagged k: texCoord k % 2 and a transform offset of k, so that each slot
+// can be told apart from the others.
+std::string tex(int k) {
+    return R"({"index": 0, "texCoord": )" + std::to_string(k % 2) +
+           R"(, "extensions": {"KHR_texture_transform": {"offset": [)" + std::to_string(k) +
+           ", 0]}}}";
+}
+
+// Materials (JSON, where @k stands for tex(k)) on one triangle, with one texture over
+// the test PNG.
+Scene load_with_material(const std::string& materials, const Mat3& to_working = Mat3::identity()) {
+    std::string json;
+    for (size_t i = 0; i < materials.size(); ++i) {
+        if (materials[i] != '@') {
+            json += materials[i];
+            continue;
+        }
+        size_t digits = 0;
+        json += tex(std::stoi(materials.substr(i + 1), &digits));
+        i += digits;
+    }
+    ScratchDir dir;
+    GltfBuilder b;
+    b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
+    b.add(std::vector<float>{0, 0, 1, 0, 0, 1}, test::kFloat, "VEC2");
+    const std::string members =
+        R"("extensionsUsed": ["KHR_texture_transform"],
+        "images": [{"uri": ")" +
+        png_uri(dir) + R"("}], "textures": [{"source": 0}],
+        "materials": [)" +
+        json + "],\n" + test::one_mesh_scene(R"({"attributes": {"POSITION": 0, "TEXCOORD_0": 1}})");
+    GltfLoadOptions options;
+    options.rec709_to_working = to_working;
+    return load_gltf(b.write(dir, "m.gltf", members, BufferStorage::DataUri), options);
+}
+
+void expect_texture(const Scene& s, const TextureRef& r, int k, ImageEncoding encoding,
+                    const char* what) {
+    SCOPED_TRACE(what);
+    ASSERT_TRUE(r.valid());
+    EXPECT_EQ(r.texcoord, k % 2);
+    EXPECT_EQ(r.offset.x, float(k));
+    const Image& img = s.images.at(s.textures.at(size_t(r.texture)).image);
+    ASSERT_EQ(img.channels, 4);
+    const float code = kTexel[0] / 255.0f;
+    const float red = encoding == ImageEncoding::Srgb ? srgb_to_linear(code) : code;
+    EXPECT_NEAR(img.at(0, 0)[0], red, 1e-5f);
+    EXPECT_NEAR(img.at(0, 0)[3], kTexel[3] / 255.0f, 1e-6f);  // alpha is never sRGB
+}
+
+void expect_eq(Vec3 a, Vec3 b) {
+    EXPECT_FLOAT_EQ(a.x, b.x);
+    EXPECT_FLOAT_EQ(a.y, b.y);
+    EXPECT_FLOAT_EQ(a.z, b.z);
+}
+
+// The spec's default of every property the extensions add (written out, not taken from
+// MaterialDesc's initialisers, so a wrong initialiser fails here).
+void expect_spec_defaults(const MaterialDesc& m) {
+    EXPECT_EQ(m.clearcoat, 0.0f);
+    EXPECT_EQ(m.clearcoat_roughness, 0.0f);
+    EXPECT_EQ(m.clearcoat_normal_scale, 1.0f);
+    expect_eq(m.sheen_color, Vec3(0.0f));
+    EXPECT_EQ(m.sheen_roughness, 0.0f);
+    EXPECT_EQ(m.thickness, 0.0f);
+    EXPECT_EQ(m.attenuation_distance, INFINITY);
+    expect_eq(m.attenuation_color, Vec3(1.0f));
+    EXPECT_EQ(m.iridescence, 0.0f);
+    EXPECT_EQ(m.iridescence_ior, 1.3f);
+    EXPECT_EQ(m.iridescence_thickness_min, 100.0f);
+    EXPECT_EQ(m.iridescence_thickness_max, 400.0f);
+    EXPECT_EQ(m.anisotropy_strength, 0.0f);
+    EXPECT_EQ(m.anisotropy_rotation, 0.0f);
+    EXPECT_EQ(m.dispersion, 0.0f);
+    EXPECT_EQ(m.diffuse_transmission, 0.0f);
+    expect_eq(m.diffuse_transmission_color, Vec3(1.0f));
+    EXPECT_EQ(m.specular, 1.0f);
+    expect_eq(m.specular_color, Vec3(1.0f));
+    EXPECT_FALSE(m.unlit);
+    EXPECT_FALSE(m.specular_glossiness);
+    for (const TextureRef* r :
+         {&m.clearcoat_texture, &m.clearcoat_roughness_texture, &m.clearcoat_normal_texture,
+          &m.sheen_color_texture, &m.sheen_roughness_texture, &m.thickness_texture,
+          &m.iridescence_texture, &m.iridescence_thickness_texture, &m.anisotropy_texture,
+          &m.diffuse_transmission_texture, &m.diffuse_transmission_color_texture,
+          &m.specular_texture, &m.specular_color_texture, &m.specular_glossiness_texture})
+        EXPECT_FALSE(r->valid());
+}
+
+TEST(GltfMaterialExtensions, EmptyExtensionObjectsGiveTheSpecDefaults) {
+    const Scene s = load_with_material(R"({}, {"extensions": {
+        "KHR_materials_clearcoat": {}, "KHR_materials_sheen": {}, "KHR_materials_volume": {},
+        "KHR_materials_iridescence": {}, "KHR_materials_anisotropy": {},
+        "KHR_materials_dispersion": {}, "KHR_materials_diffuse_transmission": {},
+        "KHR_materials_specular": {}}})");
+    ASSERT_EQ(s.materials.size(), 2u);
+    for (const MaterialDesc& m : s.materials) {
+        SCOPED_TRACE(m.name);
+        expect_spec_defaults(m);
+    }
+}
+
+TEST(GltfMaterialExtensions, EveryPropertyAndTexture) {
+    const Scene s = load_with_material(R"({"extensions": {
+        "KHR_materials_clearcoat": {"clearcoatFactor": 0.7, "clearcoatTexture": @1,
+            "clearcoatRoughnessFactor": 0.3,
+            "clearcoatRoughnessTexture": @2,
+            "clearcoatNormalTexture": {"index": 0, "texCoord": 1, "scale": 0.4,
+                "extensions": {"KHR_texture_transform": {"offset": [3, 0]}}}},
+        "KHR_materials_sheen": {"sheenColorFactor": [0.9, 0.5, 0.1],
+            "sheenColorTexture": @4, "sheenRoughnessFactor": 0.6,
+            "sheenRoughnessTexture": @5},
+        "KHR_materials_volume": {"thicknessFactor": 2.5, "thicknessTexture": @6,
+            "attenuationDistance": 0.25, "attenuationColor": [0.1, 0.5, 0.9]},
+        "KHR_materials_iridescence": {"iridescenceFactor": 0.8,
+            "iridescenceTexture": @7, "iridescenceIor": 1.8,
+            "iridescenceThicknessMinimum": 250, "iridescenceThicknessMaximum": 1200,
+            "iridescenceThicknessTexture": @8},
+        "KHR_materials_anisotropy": {"anisotropyStrength": 0.45, "anisotropyRotation": -1.25,
+            "anisotropyTexture": @9},
+        "KHR_materials_dispersion": {"dispersion": 0.35},
+        "KHR_materials_diffuse_transmission": {"diffuseTransmissionFactor": 0.55,
+            "diffuseTransmissionTexture": @10,
+            "diffuseTransmissionColorFactor": [0.2, 0.4, 0.8],
+            "diffuseTransmissionColorTexture": @11},
+        "KHR_materials_specular": {"specularFactor": 0.65, "specularTexture": @12,
+            "specularColorFactor": [1.5, 0.5, 0.25],
+            "specularColorTexture": @13}}})");
+    const MaterialDesc& m = s.materials.at(0);
+    const ImageEncoding lin = ImageEncoding::Linear, srgb = ImageEncoding::Srgb;
+    EXPECT_FLOAT_EQ(m.clearcoat, 0.7f);
+    expect_texture(s, m.clearcoat_texture, 1, lin, "clearcoatTexture");
+    EXPECT_FLOAT_EQ(m.clearcoat_roughness, 0.3f);
+    expect_texture(s, m.clearcoat_roughness_texture, 2, lin, "clearcoatRoughnessTexture");
+    expect_texture(s, m.clearcoat_normal_texture, 3, lin, "clearcoatNormalTexture");
+    EXPECT_FLOAT_EQ(m.clearcoat_normal_scale, 0.4f);
+    expect_eq(m.sheen_color, {0.9f, 0.5f, 0.1f});
+    expect_texture(s, m.sheen_color_texture, 4, srgb, "sheenColorTexture");
+    EXPECT_FLOAT_EQ(m.sheen_roughness, 0.6f);
+    expect_texture(s, m.sheen_roughness_texture, 5, lin, "sheenRoughnessTexture");
+    EXPECT_FLOAT_EQ(m.thickness, 2.5f);
+    expect_texture(s, m.thickness_texture, 6, lin, "thicknessTexture");
+    EXPECT_FLOAT_EQ(m.attenuation_distance, 0.25f);
+    expect_eq(m.attenuation_color, {0.1f, 0.5f, 0.9f});
+    EXPECT_FLOAT_EQ(m.iridescence, 0.8f);
+    expect_texture(s, m.iridescence_texture, 7, lin, "iridescenceTexture");
+    EXPECT_FLOAT_EQ(m.iridescence_ior, 1.8f);
+    EXPECT_FLOAT_EQ(m.iridescence_thickness_min, 250.0f);
+    EXPECT_FLOAT_EQ(m.iridescence_thickness_max, 1200.0f);
+    expect_texture(s, m.iridescence_thickness_texture, 8, lin, "iridescenceThicknessTexture");
+    EXPECT_FLOAT_EQ(m.anisotropy_strength, 0.45f);
+    EXPECT_FLOAT_EQ(m.anisotropy_rotation, -1.25f);
+    expect_texture(s, m.anisotropy_texture, 9, lin, "anisotropyTexture");
+    EXPECT_FLOAT_EQ(m.dispersion, 0.35f);
+    EXPECT_FLOAT_EQ(m.diffuse_transmission, 0.55f);
+    expect_texture(s, m.diffuse_transmission_texture, 10, lin, "diffuseTransmissionTexture");
+    expect_eq(m.diffuse_transmission_color, {0.2f, 0.4f, 0.8f});
+    expect_texture(s, m.diffuse_transmission_color_texture, 11, srgb,
+                   "diffuseTransmissionColorTexture");
+    EXPECT_FLOAT_EQ(m.specular, 0.65f);
+    expect_texture(s, m.specular_texture, 12, lin, "specularTexture");
+    expect_eq(m.specular_color, {1.5f, 0.5f, 0.25f});
+    expect_texture(s, m.specular_color_texture, 13, srgb, "specularColorTexture");
+    // One glTF texture, used as colour and as data: one Scene image per encoding.
+    EXPECT_EQ(s.images.size(), 2u);
+    EXPECT_FALSE(m.unlit);
+    EXPECT_FALSE(m.specular_glossiness);
+}
+
+TEST(GltfMaterialExtensions, UnlitAndSpecularGlossiness) {
+    const Scene s = load_with_material(R"({"extensions": {"KHR_materials_unlit": {}},
+          "pbrMetallicRoughness": {"baseColorFactor": [1, 0.2, 0, 1]}},
+        {"pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1], "metallicFactor": 1,
+             "roughnessFactor": 0.1, "metallicRoughnessTexture": {"index": 0}},
+         "extensions": {"KHR_materials_pbrSpecularGlossiness": {
+             "diffuseFactor": [0.9, 0.8, 0.7, 0.6], "diffuseTexture": @1,
+             "specularFactor": [0.3, 0.2, 0.1], "glossinessFactor": 0.75,
+             "specularGlossinessTexture": @2}}},
+        {"extensions": {"KHR_materials_pbrSpecularGlossiness": {}}})");
+    const MaterialDesc& unlit = s.materials.at(0);
+    EXPECT_TRUE(unlit.unlit);
+    EXPECT_FLOAT_EQ(unlit.base_color.y, 0.2f);
+    EXPECT_FALSE(unlit.specular_glossiness);
+
+    const MaterialDesc& sg = s.materials.at(1);
+    EXPECT_TRUE(sg.specular_glossiness);
+    EXPECT_FALSE(sg.unlit);
+    EXPECT_FLOAT_EQ(sg.base_color.x, 0.9f);
+    EXPECT_FLOAT_EQ(sg.base_color.w, 0.6f);
+    expect_texture(s, sg.base_color_texture, 1, ImageEncoding::Srgb, "diffuseTexture");
+    expect_eq(sg.specular_color, {0.3f, 0.2f, 0.1f});
+    EXPECT_FLOAT_EQ(sg.roughness, 0.25f);
+    EXPECT_EQ(sg.metallic, 0.0f);
+    // The metallic-roughness fallback for other viewers is dropped.
+    EXPECT_FALSE(sg.metallic_roughness_texture.valid());
+    expect_texture(s, sg.specular_glossiness_texture, 2, ImageEncoding::Srgb,
+                   "specularGlossinessTexture");
+
+    // The archived spec's defaults: diffuse 1, specular 1, glossiness 1 (roughness 0).
+    const MaterialDesc& d = s.materials.at(2);
+    EXPECT_TRUE(d.specular_glossiness);
+    EXPECT_EQ(d.base_color.x, 1.0f);
+    EXPECT_EQ(d.base_color.w, 1.0f);
+    expect_eq(d.specular_color, Vec3(1.0f));
+    EXPECT_EQ(d.roughness, 0.0f);
+    EXPECT_EQ(d.metallic, 0.0f);
+    EXPECT_FALSE(d.base_color_texture.valid());
+}
+
+// The new colour factors and sRGB textures go into the working space; data textures and
+// factors do not.
+TEST(GltfMaterialExtensions, ColoursConvertToTheWorkingSpace) {
+    const Mat3 m = Mat3::from_columns({0.5f, 0.1f, 0}, {0.25f, 0.8f, 0}, {0, 0.1f, 1});
+    const std::string material = R"({"extensions": {
+        "KHR_materials_sheen": {"sheenColorFactor": [0.9, 0.5, 0.1],
+            "sheenColorTexture": @0, "sheenRoughnessTexture": @1},
+        "KHR_materials_volume": {"attenuationColor": [0.1, 0.5, 0.9]},
+        "KHR_materials_diffuse_transmission": {"diffuseTransmissionColorFactor": [0.2, 0.4, 0.8]},
+        "KHR_materials_clearcoat": {"clearcoatFactor": 0.5}}})";
+    const Scene a = load_with_material(material), b = load_with_material(material, m);
+    const MaterialDesc &ma = a.materials.at(0), &mb = b.materials.at(0);
+    expect_eq(mb.sheen_color, m * ma.sheen_color);
+    expect_eq(mb.attenuation_color, m * ma.attenuation_color);
+    expect_eq(mb.diffuse_transmission_color, m * ma.diffuse_transmission_color);
+    EXPECT_EQ(mb.clearcoat, 0.5f);
+    auto texel = [](const Scene& s, const TextureRef& r) {
+        const float* p = s.images.at(s.textures.at(size_t(r.texture)).image).at(0, 0);
+        return Vec4(p[0], p[1], p[2], p[3]);
+    };
+    const Vec4 ca = texel(a, ma.sheen_color_texture), cb = texel(b, mb.sheen_color_texture);
+    const Vec3 want = m * Vec3(ca.x, ca.y, ca.z);
+    EXPECT_NEAR(cb.x, want.x, 1e-6f);
+    EXPECT_NEAR(cb.y, want.y, 1e-6f);
+    EXPECT_NEAR(cb.z, want.z, 1e-6f);
+    EXPECT_EQ(cb.w, ca.w);
+    const Vec4 da = texel(a, ma.sheen_roughness_texture), db = texel(b, mb.sheen_roughness_texture);
+    EXPECT_EQ(db.x, da.x);
+    EXPECT_EQ(db.y, da.y);
+}
+
+// EXT_texture_webp names the image to use; `source` is only the fallback. (The test's
+// images are PNGs: the decoder goes by the bytes' signature, not the MIME type.)
+TEST(GltfMaterialExtensions, WebpSourceWinsOverTheFallback) {
+    ScratchDir dir;
+    GltfBuilder b;
+    b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
+    const unsigned char other[4] = {255, 0, 0, 255};
+    auto file = [&](const std::string& webp) {
+        const std::string members = R"("extensionsUsed": ["EXT_texture_webp"],
+            "images": [{"uri": ")" + png_uri(dir, other) +
+                                    R"("}, {"uri": ")" + png_uri(dir) +
+                                    R"(", "mimeType": "image/webp"}],
+            "textures": [{"source": 0, "extensions": {"EXT_texture_webp": )" +
+                                    webp + R"(}}],
+            "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],)" +
+                                    test::one_mesh_scene(R"({"attributes": {"POSITION": 0}})");
+        return b.write(dir, "webp.gltf", members, BufferStorage::DataUri);
+    };
+    const Scene s = load_gltf(file(R"({"source": 1})"));
+    ASSERT_EQ(s.images.size(), 1u);
+    EXPECT_NEAR(s.images[0].at(0, 0)[0], srgb_to_linear(kTexel[0] / 255.0f), 1e-5f);
+    for (const char* bad : {R"({"source": 2})", R"({})"}) {
+        try {
+            load_gltf(file(bad));
+            ADD_FAILURE() << bad;
+        } catch (const SceneError& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find(": textures[0].extensions.EXT_texture_webp: source"),
+                      std::string::npos)
+                << what;
+        }
+    }
+}
+
+std::string error_of(const std::string& material) {
+    try {
+        load_with_material(material);
+    } catch (const SceneError& e) {
+        const std::string what = e.what();
+        const size_t at = what.find("materials[0]");
+        return at == std::string::npos ? what : what.substr(at);
+    }
+    return "(loaded)";
+}
+
+std::string ext(const char* name, const std::string& body) {
+    return std::string(R"({"extensions": {")") + name + "\": " + body + "}}";
+}
+
+// Each bound: the value on it loads, a value just past it is an error naming the
+// element, the key and the range.
+TEST(GltfMaterialExtensions, ValuesOutsideTheSpecRangeAreErrors) {
+    struct Case {
+        const char *name, *ok, *bad, *message;
+    };
+    const Case cases[] = {
+        {"KHR_materials_clearcoat", R"({"clearcoatFactor": 1})", R"({"clearcoatFactor": 1.001})",
+         "clearcoatFactor 1.001 is outside [0, 1]"},
+        {"KHR_materials_clearcoat", R"({"clearcoatRoughnessFactor": 0})",
+         R"({"clearcoatRoughnessFactor": -0.001})",
+         "clearcoatRoughnessFactor -0.001 is outside [0, 1]"},
+        {"KHR_materials_sheen", R"({"sheenColorFactor": [1, 1, 0]})",
+         R"({"sheenColorFactor": [0.5, 1.01, 0]})", "sheenColorFactor[1] 1.01 is outside [0, 1]"},
+        {"KHR_materials_sheen", R"({"sheenRoughnessFactor": 1})", R"({"sheenRoughnessFactor": 2})",
+         "sheenRoughnessFactor 2 is outside [0, 1]"},
+        {"KHR_materials_volume", R"({"thicknessFactor": 0})", R"({"thicknessFactor": -1})",
+         "thicknessFactor -1 is outside [0, +inf)"},
+        {"KHR_materials_volume", R"({"attenuationDistance": 1e-6})",
+         R"({"attenuationDistance": 0})", "attenuationDistance 0 is outside (0, +inf)"},
+        {"KHR_materials_volume", R"({"attenuationColor": [0, 0, 1]})",
+         R"({"attenuationColor": [-0.1, 0, 1]})", "attenuationColor[0] -0.1 is outside [0, 1]"},
+        {"KHR_materials_iridescence", R"({"iridescenceFactor": 1})",
+         R"({"iridescenceFactor": 1.5})", "iridescenceFactor 1.5 is outside [0, 1]"},
+        {"KHR_materials_iridescence", R"({"iridescenceIor": 1})", R"({"iridescenceIor": 0.99})",
+         "iridescenceIor 0.99 is outside [1, +inf)"},
+        {"KHR_materials_iridescence", R"({"iridescenceThicknessMinimum": 0})",
+         R"({"iridescenceThicknessMinimum": -1})",
+         "iridescenceThicknessMinimum -1 is outside [0, +inf)"},
+        {"KHR_materials_iridescence", R"({"iridescenceThicknessMaximum": 0})",
+         R"({"iridescenceThicknessMaximum": -5})",
+         "iridescenceThicknessMaximum -5 is outside [0, +inf)"},
+        {"KHR_materials_anisotropy", R"({"anisotropyStrength": 1})",
+         R"({"anisotropyStrength": -0.1})", "anisotropyStrength -0.1 is outside [0, 1]"},
+        {"KHR_materials_dispersion", R"({"dispersion": 0})", R"({"dispersion": -0.5})",
+         "dispersion -0.5 is outside [0, +inf)"},
+        {"KHR_materials_diffuse_transmission", R"({"diffuseTransmissionFactor": 1})",
+         R"({"diffuseTransmissionFactor": 1.2})",
+         "diffuseTransmissionFactor 1.2 is outside [0, 1]"},
+        {"KHR_materials_diffuse_transmission", R"({"diffuseTransmissionColorFactor": [1, 1, 1]})",
+         R"({"diffuseTransmissionColorFactor": [1, 1, 1.2]})",
+         "diffuseTransmissionColorFactor[2] 1.2 is outside [0, 1]"},
+        {"KHR_materials_specular", R"({"specularFactor": 1})", R"({"specularFactor": 1.5})",
+         "specularFactor 1.5 is outside [0, 1]"},
+        {"KHR_materials_specular", R"({"specularColorFactor": [0, 7, 0]})",
+         R"({"specularColorFactor": [0, -1, 0]})",
+         "specularColorFactor[1] -1 is outside [0, +inf)"},
+        {"KHR_materials_pbrSpecularGlossiness", R"({"diffuseFactor": [1, 1, 1, 0]})",
+         R"({"diffuseFactor": [1, 1, 1, 1.5]})", "diffuseFactor[3] 1.5 is outside [0, 1]"},
+        {"KHR_materials_pbrSpecularGlossiness", R"({"specularFactor": [1, 0, 0]})",
+         R"({"specularFactor": [2, 0, 0]})", "specularFactor[0] 2 is outside [0, 1]"},
+        {"KHR_materials_pbrSpecularGlossiness", R"({"glossinessFactor": 0})",
+         R"({"glossinessFactor": -0.1})", "glossinessFactor -0.1 is outside [0, 1]"},
+        {"KHR_materials_transmission", R"({"transmissionFactor": 1})",
+         R"({"transmissionFactor": 1.5})", "transmissionFactor 1.5 is outside [0, 1]"},
+        {"KHR_materials_emissive_strength", R"({"emissiveStrength": 0})",
+         R"({"emissiveStrength": -2})", "emissiveStrength -2 is outside [0, +inf)"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.bad);
+        EXPECT_EQ(error_of(ext(c.name, c.ok)), "(loaded)");
+        EXPECT_EQ(error_of(ext(c.name, c.bad)),
+                  "materials[0].extensions." + std::string(c.name) + ": " + c.message);
+    }
+}
+
+TEST(GltfMaterialExtensions, WrongTypesAndBadTexturesAreErrors) {
+    const std::string cc = "materials[0].extensions.KHR_materials_clearcoat";
+    EXPECT_EQ(error_of(ext("KHR_materials_clearcoat", R"({"clearcoatFactor": "1"})")),
+              cc + ": clearcoatFactor is not a number");
+    EXPECT_EQ(error_of(ext("KHR_materials_volume", R"({"attenuationColor": [1, 1]})")),
+              "materials[0].extensions.KHR_materials_volume: attenuationColor must have 3 numbers");
+    EXPECT_EQ(
+        error_of(ext("KHR_materials_clearcoat", R"({"clearcoatNormalTexture": {"index": 3}})")),
+        cc + ".clearcoatNormalTexture: texture index 3 out of range (1 textures)");
+    EXPECT_EQ(error_of(ext("KHR_materials_sheen", R"({"sheenColorTexture": {"texCoord": 0}})")),
+              "materials[0].extensions.KHR_materials_sheen.sheenColorTexture: must be a "
+              "textureInfo with an integer index");
+    EXPECT_EQ(error_of(ext("KHR_materials_pbrSpecularGlossiness",
+                           R"({"specularGlossinessTexture": {"index": -1}})")),
+              "materials[0].extensions.KHR_materials_pbrSpecularGlossiness."
+              "specularGlossinessTexture: texture index -1 out of range (1 textures)");
+    EXPECT_EQ(error_of(ext("KHR_materials_clearcoat",
+                           R"({"clearcoatNormalTexture": {"index": 0, "scale": "x"}})")),
+              cc + ".clearcoatNormalTexture: scale is not a number");
+}
+
+}  // namespace
+}  // namespace penumbra
