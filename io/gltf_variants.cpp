@@ -70,8 +70,8 @@ int primitive_material(const GltfContext& ctx, const tinygltf::Primitive& prim,
             const int variant = list.Get(int(k)).GetNumberAsInt();
             ctx.check_index(mel, "variant", variant, variants, "variants");
             if (variant != ctx.variant) continue;
-            // The spec lets a variant map to one material per primitive; a file that maps
-            // it twice renders with the first, as the draft's lookup order had it.
+            // A variant names one material per primitive; a file that maps it twice is
+            // ambiguous and renders with the first, the lookup order of the draft spec.
             if (chosen >= 0 && chosen != material)
                 ctx.warn_once("meshes",
                               "a material variant is mapped to several materials of "

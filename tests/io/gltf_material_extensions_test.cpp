@@ -278,36 +278,47 @@ TEST(GltfMaterialExtensions, ColoursConvertToTheWorkingSpace) {
     EXPECT_EQ(db.y, da.y);
 }
 
-// EXT_texture_webp names the image to use; `source` is only the fallback. (The test's
-// images are PNGs: the decoder goes by the bytes' signature, not the MIME type.)
-TEST(GltfMaterialExtensions, WebpSourceWinsOverTheFallback) {
+// EXT_texture_webp names the image to use; `source` is only the fallback, and the one
+// used beside KHR_texture_basisu (KTX2 is not read). The test's images are PNGs: the
+// decoder goes by the bytes' signature, not the MIME type.
+TEST(GltfMaterialExtensions, TextureSourcesWebpFirstThenSource) {
     ScratchDir dir;
     GltfBuilder b;
     b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
     const unsigned char other[4] = {255, 0, 0, 255};
-    auto file = [&](const std::string& webp) {
-        const std::string members = R"("extensionsUsed": ["EXT_texture_webp"],
-            "images": [{"uri": ")" + png_uri(dir, other) +
-                                    R"("}, {"uri": ")" + png_uri(dir) +
-                                    R"(", "mimeType": "image/webp"}],
-            "textures": [{"source": 0, "extensions": {"EXT_texture_webp": )" +
-                                    webp + R"(}}],
+    const std::string images = R"("images": [{"uri": ")" + png_uri(dir, other) +
+                               R"("}, {"uri": ")" + png_uri(dir) +
+                               R"(", "mimeType": "image/webp"}],)";
+    auto load = [&](const std::string& texture) {
+        const std::string members =
+            R"("extensionsUsed": ["EXT_texture_webp", "KHR_texture_basisu"],)" + images +
+            R"("textures": [)" + texture + R"(],
             "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],)" +
-                                    test::one_mesh_scene(R"({"attributes": {"POSITION": 0}})");
-        return b.write(dir, "webp.gltf", members, BufferStorage::DataUri);
+            test::one_mesh_scene(R"({"attributes": {"POSITION": 0}})");
+        const Scene s = load_gltf(b.write(dir, "src.gltf", members, BufferStorage::DataUri));
+        EXPECT_EQ(s.images.size(), 1u);  // only the chosen image is decoded
+        return s.images.at(0).at(0, 0)[0];
     };
-    const Scene s = load_gltf(file(R"({"source": 1})"));
-    ASSERT_EQ(s.images.size(), 1u);
-    EXPECT_NEAR(s.images[0].at(0, 0)[0], srgb_to_linear(kTexel[0] / 255.0f), 1e-5f);
-    for (const char* bad : {R"({"source": 2})", R"({})"}) {
+    const float webp = srgb_to_linear(kTexel[0] / 255.0f);
+    EXPECT_NEAR(load(R"({"source": 0, "extensions": {"EXT_texture_webp": {"source": 1}}})"), webp,
+                1e-5f);
+    EXPECT_NEAR(load(R"({"extensions": {"EXT_texture_webp": {"source": 1}}})"), webp, 1e-5f);
+    EXPECT_EQ(load(R"({"source": 0})"), 1.0f);
+    EXPECT_EQ(load(R"({"source": 0, "extensions": {"KHR_texture_basisu": {"source": 1}}})"), 1.0f);
+    const std::pair<const char*, const char*> errors[] = {
+        {R"({"source": 0, "extensions": {"EXT_texture_webp": {"source": 2}}})",
+         "textures[0].extensions.EXT_texture_webp: source index 2 out of range (2 images)"},
+        {R"({"source": 0, "extensions": {"EXT_texture_webp": {}}})",
+         "textures[0].extensions.EXT_texture_webp: source must be an integer image index"},
+        {R"({"extensions": {"KHR_texture_basisu": {"source": 1}}})",
+         "textures[0]: has only a KHR_texture_basisu (KTX2) source, which is not supported"},
+    };
+    for (const auto& [texture, message] : errors) {
         try {
-            load_gltf(file(bad));
-            ADD_FAILURE() << bad;
+            load(texture);
+            ADD_FAILURE() << texture;
         } catch (const SceneError& e) {
-            const std::string what = e.what();
-            EXPECT_NE(what.find(": textures[0].extensions.EXT_texture_webp: source"),
-                      std::string::npos)
-                << what;
+            EXPECT_EQ(std::string(e.what()), dir.file("src.gltf") + ": " + message);
         }
     }
 }
