@@ -1,78 +1,28 @@
 // Every property of the KHR material extensions (clearcoat, sheen, volume, iridescence,
 // anisotropy, dispersion, diffuse transmission, specular), unlit and specular-glossiness:
 // the specs' defaults, non-default values, each texture in its own slot with its UV set
-// and encoding (sRGB or linear), colour conversion, and the range and type errors.
-#include <OpenImageIO/imageio.h>
+// and encoding (sRGB or linear), colour conversion, and the texture source choice
+// (EXT_texture_webp, KHR_texture_basisu). Range and type errors: gltf_material_ranges_test.
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <iterator>
 
 #include "core/error.h"
 #include "io/color.h"
 #include "io/gltf_loader.h"
 #include "io/image_reader.h"
 #include "support/gltf_builder.h"
+#include "support/material_gltf.h"
 
 namespace penumbra {
 namespace {
 
 using test::BufferStorage;
 using test::GltfBuilder;
+using test::kTexel;
+using test::load_with_material;
+using test::png_uri;
 using test::ScratchDir;
-
-// The one texel of the test texture, as 8-bit codes: a linear decode gives code / 255,
-// an sRGB one srgb_to_linear(code / 255) for RGB (0.2 -> 0.0331) and code / 255 for A.
-constexpr unsigned char kTexel[4] = {51, 102, 204, 153};
-
-std::string png_uri(const ScratchDir& dir, const unsigned char* texel = kTexel) {
-    const std::string path = dir.file("t.png");
-    auto out = OIIO::ImageOutput::create(path);
-    EXPECT_TRUE(out && out->open(path, OIIO::ImageSpec(1, 1, 4, OIIO::TypeDesc::UINT8)));
-    out->write_image(OIIO::TypeDesc::UINT8, texel);
-    out->close();
-    std::ifstream f(path, std::ios::binary);
-    const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(f),
-                                     std::istreambuf_iterator<char>()};
-    return "data:image/png;base64," + test::base64(bytes);
-}
-
-// A textureInfo tagged k: texCoord k % 2 and a transform offset of k, so that each slot
-// can be told apart from the others.
-std::string tex(int k) {
-    return R"({"index": 0, "texCoord": )" + std::to_string(k % 2) +
-           R"(, "extensions": {"KHR_texture_transform": {"offset": [)" + std::to_string(k) +
-           ", 0]}}}";
-}
-
-// Materials (JSON, where @k stands for tex(k)) on one triangle, with one texture over
-// the test PNG.
-Scene load_with_material(const std::string& materials, const Mat3& to_working = Mat3::identity()) {
-    std::string json;
-    for (size_t i = 0; i < materials.size(); ++i) {
-        if (materials[i] != '@') {
-            json += materials[i];
-            continue;
-        }
-        size_t digits = 0;
-        json += tex(std::stoi(materials.substr(i + 1), &digits));
-        i += digits;
-    }
-    ScratchDir dir;
-    GltfBuilder b;
-    b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
-    b.add(std::vector<float>{0, 0, 1, 0, 0, 1}, test::kFloat, "VEC2");
-    const std::string members =
-        R"("extensionsUsed": ["KHR_texture_transform"],
-        "images": [{"uri": ")" +
-        png_uri(dir) + R"("}], "textures": [{"source": 0}],
-        "materials": [)" +
-        json + "],\n" + test::one_mesh_scene(R"({"attributes": {"POSITION": 0, "TEXCOORD_0": 1}})");
-    GltfLoadOptions options;
-    options.rec709_to_working = to_working;
-    return load_gltf(b.write(dir, "m.gltf", members, BufferStorage::DataUri), options);
-}
 
 void expect_texture(const Scene& s, const TextureRef& r, int k, ImageEncoding encoding,
                     const char* what) {
@@ -321,108 +271,6 @@ TEST(GltfMaterialExtensions, TextureSourcesWebpFirstThenSource) {
             EXPECT_EQ(std::string(e.what()), dir.file("src.gltf") + ": " + message);
         }
     }
-}
-
-std::string error_of(const std::string& material) {
-    try {
-        load_with_material(material);
-    } catch (const SceneError& e) {
-        const std::string what = e.what();
-        const size_t at = what.find("materials[0]");
-        return at == std::string::npos ? what : what.substr(at);
-    }
-    return "(loaded)";
-}
-
-std::string ext(const char* name, const std::string& body) {
-    return std::string(R"({"extensions": {")") + name + "\": " + body + "}}";
-}
-
-// Each bound: the value on it loads, a value just past it is an error naming the
-// element, the key and the range.
-TEST(GltfMaterialExtensions, ValuesOutsideTheSpecRangeAreErrors) {
-    struct Case {
-        const char *name, *ok, *bad, *message;
-    };
-    const Case cases[] = {
-        {"KHR_materials_clearcoat", R"({"clearcoatFactor": 1})", R"({"clearcoatFactor": 1.001})",
-         "clearcoatFactor 1.001 is outside [0, 1]"},
-        {"KHR_materials_clearcoat", R"({"clearcoatRoughnessFactor": 0})",
-         R"({"clearcoatRoughnessFactor": -0.001})",
-         "clearcoatRoughnessFactor -0.001 is outside [0, 1]"},
-        {"KHR_materials_sheen", R"({"sheenColorFactor": [1, 1, 0]})",
-         R"({"sheenColorFactor": [0.5, 1.01, 0]})", "sheenColorFactor[1] 1.01 is outside [0, 1]"},
-        {"KHR_materials_sheen", R"({"sheenRoughnessFactor": 1})", R"({"sheenRoughnessFactor": 2})",
-         "sheenRoughnessFactor 2 is outside [0, 1]"},
-        {"KHR_materials_volume", R"({"thicknessFactor": 0})", R"({"thicknessFactor": -1})",
-         "thicknessFactor -1 is outside [0, +inf)"},
-        {"KHR_materials_volume", R"({"attenuationDistance": 1e-6})",
-         R"({"attenuationDistance": 0})", "attenuationDistance 0 is outside (0, +inf)"},
-        {"KHR_materials_volume", R"({"attenuationColor": [0, 0, 1]})",
-         R"({"attenuationColor": [-0.1, 0, 1]})", "attenuationColor[0] -0.1 is outside [0, 1]"},
-        {"KHR_materials_iridescence", R"({"iridescenceFactor": 1})",
-         R"({"iridescenceFactor": 1.5})", "iridescenceFactor 1.5 is outside [0, 1]"},
-        {"KHR_materials_iridescence", R"({"iridescenceIor": 1})", R"({"iridescenceIor": 0.99})",
-         "iridescenceIor 0.99 is outside [1, +inf)"},
-        {"KHR_materials_iridescence", R"({"iridescenceThicknessMinimum": 0})",
-         R"({"iridescenceThicknessMinimum": -1})",
-         "iridescenceThicknessMinimum -1 is outside [0, +inf)"},
-        {"KHR_materials_iridescence", R"({"iridescenceThicknessMaximum": 0})",
-         R"({"iridescenceThicknessMaximum": -5})",
-         "iridescenceThicknessMaximum -5 is outside [0, +inf)"},
-        {"KHR_materials_anisotropy", R"({"anisotropyStrength": 1})",
-         R"({"anisotropyStrength": -0.1})", "anisotropyStrength -0.1 is outside [0, 1]"},
-        {"KHR_materials_dispersion", R"({"dispersion": 0})", R"({"dispersion": -0.5})",
-         "dispersion -0.5 is outside [0, +inf)"},
-        {"KHR_materials_diffuse_transmission", R"({"diffuseTransmissionFactor": 1})",
-         R"({"diffuseTransmissionFactor": 1.2})",
-         "diffuseTransmissionFactor 1.2 is outside [0, 1]"},
-        {"KHR_materials_diffuse_transmission", R"({"diffuseTransmissionColorFactor": [1, 1, 1]})",
-         R"({"diffuseTransmissionColorFactor": [1, 1, 1.2]})",
-         "diffuseTransmissionColorFactor[2] 1.2 is outside [0, 1]"},
-        {"KHR_materials_specular", R"({"specularFactor": 1})", R"({"specularFactor": 1.5})",
-         "specularFactor 1.5 is outside [0, 1]"},
-        {"KHR_materials_specular", R"({"specularColorFactor": [0, 7, 0]})",
-         R"({"specularColorFactor": [0, -1, 0]})",
-         "specularColorFactor[1] -1 is outside [0, +inf)"},
-        {"KHR_materials_pbrSpecularGlossiness", R"({"diffuseFactor": [1, 1, 1, 0]})",
-         R"({"diffuseFactor": [1, 1, 1, 1.5]})", "diffuseFactor[3] 1.5 is outside [0, 1]"},
-        {"KHR_materials_pbrSpecularGlossiness", R"({"specularFactor": [1, 0, 0]})",
-         R"({"specularFactor": [2, 0, 0]})", "specularFactor[0] 2 is outside [0, 1]"},
-        {"KHR_materials_pbrSpecularGlossiness", R"({"glossinessFactor": 0})",
-         R"({"glossinessFactor": -0.1})", "glossinessFactor -0.1 is outside [0, 1]"},
-        {"KHR_materials_transmission", R"({"transmissionFactor": 1})",
-         R"({"transmissionFactor": 1.5})", "transmissionFactor 1.5 is outside [0, 1]"},
-        {"KHR_materials_emissive_strength", R"({"emissiveStrength": 0})",
-         R"({"emissiveStrength": -2})", "emissiveStrength -2 is outside [0, +inf)"},
-    };
-    for (const Case& c : cases) {
-        SCOPED_TRACE(c.bad);
-        EXPECT_EQ(error_of(ext(c.name, c.ok)), "(loaded)");
-        EXPECT_EQ(error_of(ext(c.name, c.bad)),
-                  "materials[0].extensions." + std::string(c.name) + ": " + c.message);
-    }
-}
-
-TEST(GltfMaterialExtensions, WrongTypesAndBadTexturesAreErrors) {
-    const std::string cc = "materials[0].extensions.KHR_materials_clearcoat";
-    EXPECT_EQ(error_of(ext("KHR_materials_clearcoat", R"({"clearcoatFactor": "1"})")),
-              cc + ": clearcoatFactor is not a number");
-    EXPECT_EQ(error_of(ext("KHR_materials_volume", R"({"attenuationColor": [1, 1]})")),
-              "materials[0].extensions.KHR_materials_volume: attenuationColor must have 3 numbers");
-    EXPECT_EQ(
-        error_of(ext("KHR_materials_clearcoat", R"({"clearcoatNormalTexture": {"index": 3}})")),
-        cc + ".clearcoatNormalTexture: texture index 3 out of range (1 textures)");
-    EXPECT_EQ(error_of(ext("KHR_materials_sheen", R"({"sheenColorTexture": {"texCoord": 0}})")),
-              "materials[0].extensions.KHR_materials_sheen.sheenColorTexture: must be a "
-              "textureInfo with an integer index");
-    EXPECT_EQ(error_of(ext("KHR_materials_pbrSpecularGlossiness",
-                           R"({"specularGlossinessTexture": {"index": -1}})")),
-              "materials[0].extensions.KHR_materials_pbrSpecularGlossiness."
-              "specularGlossinessTexture: texture index -1 out of range (1 textures)");
-    EXPECT_EQ(error_of(ext("KHR_materials_clearcoat",
-                           R"({"clearcoatNormalTexture": {"index": 0, "scale": "x"}})")),
-              cc + ".clearcoatNormalTexture: scale is not a number");
 }
 
 }  // namespace
