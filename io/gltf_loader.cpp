@@ -153,6 +153,14 @@ tinygltf::Model parse(const std::string& path) {
         throw SceneError(path + ": " + one_line(e.what()));
     }
     log_lines(path, warn);
+    // tinygltf reads extensionsRequired before buffers and accessors, which a compression
+    // extension (Draco, meshopt) leaves without data; name the extension, not the
+    // accessor it broke.
+    if (!ok)
+        for (const std::string& name : model.extensionsRequired)
+            if (!is_supported(name))
+                throw SceneError(path + ": extensionsRequired: unsupported extension '" + name +
+                                 "'");
     if (!ok) throw SceneError(path + ": " + (err.empty() ? "cannot parse glTF" : one_line(err)));
     log_lines(path, err);  // tinygltf reports some recoverable problems as errors
     return model;
