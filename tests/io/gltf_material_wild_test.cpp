@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -59,8 +60,7 @@ TEST(GltfMaterialWild, EveryFileLoadsWithoutAnUnsupportedMaterialOrTextureExtens
         }
         const std::string log = testing::internal::GetCapturedStderr();
         if (const char* needs = required_compression(path)) {
-            EXPECT_EQ(error,
-                      path + ": extensionsRequired: unsupported extension '" + needs + "'");
+            EXPECT_EQ(error, path + ": extensionsRequired: unsupported extension '" + needs + "'");
         } else {
             EXPECT_EQ(error, "");
         }
@@ -113,6 +113,51 @@ TEST(GltfMaterialWild, UnlitAndSpecularGlossinessFiles) {
     ASSERT_NE(label, sg.materials.end());
     EXPECT_EQ(label->roughness, 1.0f);
     EXPECT_TRUE(is_black(label->specular_color));
+}
+
+const MaterialDesc& named(const Scene& s, const std::string& name) {
+    for (const MaterialDesc& m : s.materials)
+        if (m.name == name) return m;
+    ADD_FAILURE() << "no material " << name;
+    return s.materials.at(0);
+}
+
+// Values read from each file's JSON, as exporters wrote them.
+TEST(GltfMaterialWild, ExtensionValuesOfRealFiles) {
+    const Scene golf = load_gltf(wild("GolfBall/GolfBall.glb"));
+    EXPECT_EQ(golf.materials.at(0).clearcoat, 1.0f);
+    EXPECT_EQ(golf.materials.at(0).clearcoat_roughness, 0.0f);
+    EXPECT_TRUE(golf.materials.at(0).clearcoat_normal_texture.valid());
+
+    const Scene cloth = load_gltf(wild("SheenCloth/SheenCloth.gltf"));
+    const MaterialDesc& sheen = named(cloth, "SheenClothMat");
+    EXPECT_EQ(sheen.sheen_color.x, 1.0f);
+    EXPECT_EQ(sheen.sheen_roughness, 1.0f);
+    ASSERT_TRUE(sheen.sheen_color_texture.valid());
+    EXPECT_EQ(sheen.sheen_color_texture.scale.x, 30.0f);
+    EXPECT_EQ(sheen.sheen_color_texture.scale.y, -30.0f);
+    EXPECT_TRUE(sheen.sheen_roughness_texture.valid());
+
+    const Scene spec = load_gltf(wild("SpecularTest/SpecularTest.glb"));
+    EXPECT_TRUE(named(spec, "M2_SpecTex").specular_texture.valid());
+    EXPECT_TRUE(named(spec, "M4_whiteTex").specular_color_texture.valid());
+    EXPECT_FLOAT_EQ(named(spec, "M1.3_specFac").specular, 0.212231f);
+    // Above 1, as KHR_materials_specular allows.
+    EXPECT_EQ(named(spec, "M7.5_HDR").specular_color.y, 25.0f);
+
+    const Scene att = load_gltf(wild("AttenuationTest/AttenuationTest.glb"));
+    const MaterialDesc& tex = named(att, "R3_ThicknessTex_Mat");
+    EXPECT_EQ(tex.thickness, 2.0f);
+    EXPECT_TRUE(tex.thickness_texture.valid());
+    EXPECT_FLOAT_EQ(tex.attenuation_color.y, 0.5f);
+    EXPECT_EQ(named(att, "R5_Attenuation_0.25").attenuation_distance, 4.0f);
+    EXPECT_EQ(named(att, "R1_Sample_1.0").attenuation_distance, INFINITY);
+
+    const Scene aniso = load_gltf(wild("AnisotropyStrengthTest/AnisotropyStrengthTest.glb"));
+    ASSERT_EQ(aniso.materials.size(), 50u);
+    EXPECT_FLOAT_EQ(aniso.materials[3].anisotropy_strength, 0.5f);
+    EXPECT_EQ(aniso.materials[6].anisotropy_strength, 1.0f);
+    EXPECT_EQ(aniso.materials[49].anisotropy_strength, 0.0f);
 }
 
 // Both files decode the WebP image (the fallback file's PNG is not used): the same
