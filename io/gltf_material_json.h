@@ -19,6 +19,7 @@ struct JsonRange {
 
     bool contains(float v) const { return (open_low ? v > lo : v >= lo) && v <= hi; }
     std::string text() const {
+        if (lo == -FLT_MAX && hi == FLT_MAX) return "the float range";
         std::ostringstream s;
         auto bound = [&](float b) {
             if (std::isinf(b))

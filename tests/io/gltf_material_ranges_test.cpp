@@ -61,6 +61,8 @@ TEST(GltfMaterialRanges, ValuesOutsideTheSpecRangeAreErrors) {
          "iridescenceThicknessMaximum -5 is outside [0, +inf)"},
         {"KHR_materials_anisotropy", R"({"anisotropyStrength": 1})",
          R"({"anisotropyStrength": -0.1})", "anisotropyStrength -0.1 is outside [0, 1]"},
+        {"KHR_materials_anisotropy", R"({"anisotropyRotation": -1e38})",
+         R"({"anisotropyRotation": 1e39})", "anisotropyRotation 1e+39 is outside the float range"},
         {"KHR_materials_dispersion", R"({"dispersion": 0})", R"({"dispersion": -0.5})",
          "dispersion -0.5 is outside [0, +inf)"},
         {"KHR_materials_diffuse_transmission", R"({"diffuseTransmissionFactor": 1})",
