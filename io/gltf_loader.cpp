@@ -158,7 +158,7 @@ GltfAnimations load_gltf_animations(const std::string& path) {
 
 Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
     const tinygltf::Model model = parse(path);
-    const GltfContext ctx{model, path, options.rec709_to_working};
+    const GltfContext ctx{model, path, options.rec709_to_working, options.light_units};
     check_asset_and_extensions(ctx);
 
     const Shutter shutter{options.shutter_open, options.shutter_close};
