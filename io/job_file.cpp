@@ -95,7 +95,8 @@ public:
         choice("light_units", s.light_units, {"photometric", "radiometric"});
         choice("default_light", s.default_light, {"auto", "on", "off"});
         number("exposure", s.exposure, false);
-        if (s.exposure && std::abs(*s.exposure) > 64) fail("exposure", "expected stops in [-64, 64]");
+        if (s.exposure && std::abs(*s.exposure) > 64)
+            fail("exposure", "expected stops in [-64, 64]");
     }
 
     [[noreturn]] void fail(const std::string& key, const std::string& what) const {

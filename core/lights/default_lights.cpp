@@ -76,8 +76,9 @@ LightingChoice choose_lighting(DefaultLightMode mode, const Scene& scene, bool h
     if (has_environment) return {false, "the environment"};
     const EmitterSummary e = summarize_emitters(scene);
     if (e.area == 0)
-        return {true, "no lights or emitters in the file: default key and fill lights and a "
-                      "dim environment (--default-light off to disable)"};
+        return {true,
+                "no lights or emitters in the file: default key and fill lights and a "
+                "dim environment (--default-light off to disable)"};
     const double R = scene_radius(scene);
     const double default_power =
         double(kDefaultKeyIrradiance + kDefaultFillIrradiance) * kPi * R * R;

@@ -155,7 +155,7 @@ TEST(LightCli, JobFileKeysReachTheRender) {
     const test::ScratchDir dir;
     const std::string job = dir.write("job.json", R"({"defaults": {"exposure": -1},
         "jobs": [{"scene": ")" + test::source_path("scenes/cornell-box-point.gltf") +
-                                                       R"(", "light_units": "radiometric",
+                                                      R"(", "light_units": "radiometric",
                   "default_light": "on", "output": "j.exr"}]})");
     const test::CliResult r = test::run_penumbra(
         {"render", "--job", job, "--spp", "1", "--width", "16", "--no-preview", "-q"});

@@ -77,8 +77,8 @@ TEST(DefaultLights, EmitterPowerIsWorldAreaTimesPiTimesMeanRadiance) {
 TEST(DefaultLights, HelmetLikeScenesGetTheDefaultLighting) {
     // A 2 cm square of radiance 5 on a 2 m body: bright, but a speck (6 mW; the default
     // lights deliver 29 W to the body's bounding sphere).
-    const LightingChoice tiny = choose_lighting(DefaultLightMode::Auto,
-                                                helmet_like(0.02f, Spectrum(5)), false);
+    const LightingChoice tiny =
+        choose_lighting(DefaultLightMode::Auto, helmet_like(0.02f, Spectrum(5)), false);
     EXPECT_TRUE(tiny.add_defaults) << tiny.reason;
     EXPECT_NE(tiny.reason.find("too small"), std::string::npos) << tiny.reason;
     // The whole top emissive through a mostly black texture (mean 0.04 of a factor of 1):
@@ -100,8 +100,8 @@ TEST(DefaultLights, EmitterLitRoomsKeepTheirOwnLight) {
     EXPECT_FALSE(cornell.add_defaults) << cornell.reason;
     // The bundled emitter-lit scenes. soft-shadows.gltf is the closest call: three panels
     // of 3 W/pi each on a 16 m floor, 2.2% of the default lights' power (threshold 1%).
-    for (const char* name : {"scenes/cornell-box.gltf", "scenes/soft-shadows.gltf",
-                             "scenes/glossy.gltf"}) {
+    for (const char* name :
+         {"scenes/cornell-box.gltf", "scenes/soft-shadows.gltf", "scenes/glossy.gltf"}) {
         const Scene s = load_gltf(test::source_path(name));
         const LightingChoice c = choose_lighting(DefaultLightMode::Auto, s, false);
         EXPECT_FALSE(c.add_defaults) << name << ": " << c.reason;
@@ -112,22 +112,22 @@ TEST(DefaultLights, ThresholdsSitWhereDocumented) {
     // Mean radiance threshold (2.5 + 0.6) / pi = 0.987: a panel as large as the Cornell
     // box's, 1% below and above it.
     const float limit = (kDefaultKeyIrradiance + kDefaultFillIrradiance) / kPi;
-    EXPECT_TRUE(choose_lighting(DefaultLightMode::Auto, helmet_like(1.0f, Spectrum(0.99f * limit)),
-                                false)
-                    .add_defaults);
-    EXPECT_FALSE(choose_lighting(DefaultLightMode::Auto,
-                                 helmet_like(1.0f, Spectrum(1.01f * limit)), false)
-                     .add_defaults);
+    EXPECT_TRUE(
+        choose_lighting(DefaultLightMode::Auto, helmet_like(1.0f, Spectrum(0.99f * limit)), false)
+            .add_defaults);
+    EXPECT_FALSE(
+        choose_lighting(DefaultLightMode::Auto, helmet_like(1.0f, Spectrum(1.01f * limit)), false)
+            .add_defaults);
     // Power threshold: 1% of 3.1 pi R^2 with R = sqrt(3) (the body's bounding sphere; the
     // patch on top stays inside it), for a patch of radiance 100: side^2 = 0.01 x 3.1 x 3 /
     // 100.
     const float side = std::sqrt(0.01f * 3.1f * 3.0f / 100.0f);
-    EXPECT_TRUE(choose_lighting(DefaultLightMode::Auto, helmet_like(0.99f * side, Spectrum(100)),
-                                false)
-                    .add_defaults);
-    EXPECT_FALSE(choose_lighting(DefaultLightMode::Auto,
-                                 helmet_like(1.01f * side, Spectrum(100)), false)
-                     .add_defaults);
+    EXPECT_TRUE(
+        choose_lighting(DefaultLightMode::Auto, helmet_like(0.99f * side, Spectrum(100)), false)
+            .add_defaults);
+    EXPECT_FALSE(
+        choose_lighting(DefaultLightMode::Auto, helmet_like(1.01f * side, Spectrum(100)), false)
+            .add_defaults);
 }
 
 TEST(DefaultLights, ModesLightsAndEnvironmentDecideBeforeTheEmitters) {
