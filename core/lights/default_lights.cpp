@@ -93,9 +93,12 @@ LightingChoice choose_lighting(DefaultLightMode mode, const Scene& scene, bool h
                              "default lights' on it): default key and fill lights and a dim "
                              "environment added (--default-light off to disable)",
                              e.power, 100 * fraction)};
-    return {false, format("the file's emitters (%.3g W, mean radiance %.3g; --default-light on "
-                          "adds key and fill lights)",
-                          e.power, e.mean_radiance())};
+    char buf[320];
+    std::snprintf(buf, sizeof buf,
+                  "the file's emitters (%.3g W, %.2g%% of the default lights' on the scene; mean "
+                  "radiance %.3g; --default-light on adds key and fill lights)",
+                  e.power, 100 * fraction, e.mean_radiance());
+    return {false, buf};
 }
 
 std::unique_ptr<EnvironmentLight> add_default_lights(Scene& scene, const CameraDesc& camera) {
