@@ -5,6 +5,7 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <memory>
 #include <numeric>
 
@@ -40,8 +41,11 @@ Exr read_exr(const std::string& path) {
     return e;
 }
 
-test::CliResult render(const std::string& scene, const std::string& out, const Args& more) {
-    Args args = {"render", scene, "-o", out, "--spp", "2", "--width", "32", "--no-preview"};
+// A small render of scene to out (with its PNG preview when `preview`).
+test::CliResult render(const std::string& scene, const std::string& out, const Args& more,
+                       bool preview = false) {
+    Args args = {"render", scene, "-o", out, "--spp", "2", "--width", "32"};
+    if (!preview) args.push_back("--no-preview");
     args.insert(args.end(), more.begin(), more.end());
     return test::run_penumbra(args);
 }
@@ -74,8 +78,8 @@ std::string helmet_like(const test::ScratchDir& dir) {
 TEST(LightCli, ExposureScalesTheExrByExactlyTwoToTheEv) {
     const test::ScratchDir dir;
     const std::string scene = test::source_path("scenes/cornell-box.gltf");
-    ASSERT_EQ(render(scene, dir.file("a.exr"), {}).status, 0);
-    const test::CliResult r = render(scene, dir.file("b.exr"), {"--exposure", "1.5"});
+    ASSERT_EQ(render(scene, dir.file("a.exr"), {}, true).status, 0);
+    const test::CliResult r = render(scene, dir.file("b.exr"), {"--exposure", "1.5"}, true);
     ASSERT_EQ(r.status, 0) << r.output;
     const Exr a = read_exr(dir.file("a.exr")), b = read_exr(dir.file("b.exr"));
     ASSERT_EQ(a.pixels.size(), b.pixels.size());
@@ -92,6 +96,10 @@ TEST(LightCli, ExposureScalesTheExrByExactlyTwoToTheEv) {
     EXPECT_GT(lit, a.pixels.size() / 2);
     EXPECT_FLOAT_EQ(a.spec.get_float_attribute("penumbra:exposure", -1), 0.0f);
     EXPECT_FLOAT_EQ(b.spec.get_float_attribute("penumbra:exposure", -1), 1.5f);
+    // The preview is exposed too: 2.8 times the light through the display curve.
+    const Exr pa = read_exr(dir.file("a.png")), pb = read_exr(dir.file("b.png"));
+    ASSERT_EQ(pa.pixels.size(), pb.pixels.size());
+    EXPECT_GT(pb.mean_rgb(), 1.3 * pa.mean_rgb());
 }
 
 TEST(LightCli, RadiometricUnitsRead683TimesBrighter) {
@@ -131,6 +139,8 @@ TEST(LightCli, AutoLightsAHelmetLikeSceneAndNotesWhy) {
     EXPECT_EQ(on.pixels, lit.pixels);   // auto chose what on forces
     // The square fills most of the view: lit, it averages ~0.5; by its patch alone the
     // image is nearly black (the patch is a pixel or two; its light is a speck).
+    std::printf("helmet-like: mean %.4f with the default lighting, %.6f without\n", lit.mean_rgb(),
+                dark.mean_rgb());
     EXPECT_GT(lit.mean_rgb(), 0.2);
     EXPECT_LT(dark.mean_rgb(), 0.02 * lit.mean_rgb());
 }
