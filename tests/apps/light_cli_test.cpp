@@ -78,22 +78,29 @@ std::string helmet_like(const test::ScratchDir& dir) {
 TEST(LightCli, ExposureScalesTheExrByExactlyTwoToTheEv) {
     const test::ScratchDir dir;
     const std::string scene = test::source_path("scenes/cornell-box.gltf");
-    ASSERT_EQ(render(scene, dir.file("a.exr"), {}, true).status, 0);
-    const test::CliResult r = render(scene, dir.file("b.exr"), {"--exposure", "1.5"}, true);
+    ASSERT_EQ(render(scene, dir.file("a.exr"), {"--aov", "variance,albedo"}, true).status, 0);
+    const test::CliResult r =
+        render(scene, dir.file("b.exr"), {"--aov", "variance,albedo", "--exposure", "1.5"}, true);
     ASSERT_EQ(r.status, 0) << r.output;
     const Exr a = read_exr(dir.file("a.exr")), b = read_exr(dir.file("b.exr"));
     ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    ASSERT_EQ(a.spec.channelnames, b.spec.channelnames);
     const float scale = std::exp2(1.5f);
+    // Colour times 2^EV, variance times 4^EV, alpha and albedo unchanged.
+    std::vector<float> factor;
+    for (const std::string& name : a.spec.channelnames)
+        factor.push_back(name == "R" || name == "G" || name == "B" ? scale
+                         : name.rfind("Variance.", 0) == 0         ? scale * scale
+                                                                   : 1.0f);
+    ASSERT_EQ(factor.size(), 10u);  // RGBA, Albedo.RGB, Variance.RGB
     size_t lit = 0;
     for (size_t i = 0; i < a.pixels.size(); ++i) {
-        const bool alpha = i % size_t(a.spec.nchannels) == 3;
-        // One float multiplication: within half an ULP of the exact product.
-        EXPECT_NEAR(b.pixels[i], alpha ? a.pixels[i] : scale * a.pixels[i],
-                    6e-8f * std::abs(b.pixels[i]))
-            << i;
-        lit += !alpha && a.pixels[i] > 0;
+        const float f = factor[i % factor.size()];
+        // One or two float multiplications: within an ULP of the exact product.
+        EXPECT_NEAR(b.pixels[i], f * a.pixels[i], 1.2e-7f * std::abs(b.pixels[i])) << i;
+        lit += f == scale && a.pixels[i] > 0;
     }
-    EXPECT_GT(lit, a.pixels.size() / 2);
+    EXPECT_GT(lit, a.pixels.size() / 10 * 3 / 2);  // most colour values are nonzero
     EXPECT_FLOAT_EQ(a.spec.get_float_attribute("penumbra:exposure", -1), 0.0f);
     EXPECT_FLOAT_EQ(b.spec.get_float_attribute("penumbra:exposure", -1), 1.5f);
     // The preview is exposed too: 2.8 times the light through the display curve.
