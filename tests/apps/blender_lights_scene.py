@@ -4,7 +4,8 @@ Run by Blender 3.4:  blender -b --factory-startup --python blender_lights_scene.
 Builds a scene in Blender (a diffuse floor, two boxes, a point light, a spot light and a
 sun, in Blender's units: W and W/m^2), exports it with Blender's glTF add-on in its
 default lighting mode ("Standard": candela = W / 4 pi x 683, lux = W/m^2 x 683) as
-all.gltf, plus one file per light (point.gltf, spot.gltf, sun.gltf), then imports each
+all.gltf, plus one file per light (point.gltf, spot.gltf, sun.gltf) and all.gltf's scene
+in the "Unitless" and "Raw" modes (unitless.gltf, raw.gltf), then imports each Standard
 file into an empty scene with the importer's defaults and renders it with Cycles
 (cycles_VARIANT_SEED.exr, seeds 1 and 2; SPP samples, 8 x SPP for all.gltf). Prints the
 pixel rectangles of the regions the test compares: "REGION name x0 y0 x1 y1" (x right,
@@ -171,6 +172,12 @@ for variant, lights in VARIANTS.items():
     bpy.ops.export_scene.gltf(filepath=os.path.join(out_dir, variant + ".gltf"),
                               export_format="GLTF_EMBEDDED", export_cameras=True,
                               export_lights=True)
+    if variant == "all":
+        # The add-on's two other lighting modes, for the loader-level check of the mapping.
+        for mode, name in (("COMPAT", "unitless"), ("RAW", "raw")):
+            bpy.ops.export_scene.gltf(filepath=os.path.join(out_dir, name + ".gltf"),
+                                      export_format="GLTF_EMBEDDED", export_cameras=True,
+                                      export_lights=True, convert_lighting_mode=mode)
 for variant in VARIANTS:
     import_and_render(os.path.join(out_dir, variant + ".gltf"), variant)
 print("DONE")

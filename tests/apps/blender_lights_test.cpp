@@ -5,6 +5,7 @@
 // agree on lit diffuse regions, light by light and all together.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <array>
 #include <cmath>
@@ -17,8 +18,9 @@
 #include <sstream>
 #include <string>
 
+#include "core/lights/light_units.h"
+#include "io/gltf_loader.h"
 #include "support/cli_process.h"
-#include "support/gltf_builder.h"
 #include "support/paths.h"
 
 namespace penumbra {
@@ -89,15 +91,72 @@ RegionMean region_mean(const std::vector<double>& a, const std::vector<double>& 
     return {sum / (2 * n), std::sqrt(d2 / (2 * n) / (2 * n))};
 }
 
-TEST(BlenderLights, CyclesAndPenumbraAgreeOnBlenderExportedLights) {
-    ASSERT_TRUE(std::filesystem::exists("/usr/bin/blender"))
-        << "blender is not installed (Debian package blender; scripts/setup.sh --test)";
-    const test::ScratchDir dir;
-    const std::string out = run_shell(
-        blender_path_env() + " /usr/bin/blender -b --factory-startup --python '" +
-        test::source_path("tests/apps/blender_lights_scene.py") + "' -- '" + dir.file("") + "' " +
-        std::to_string(kWidth) + " " + std::to_string(kHeight) + " " + std::to_string(kSpp));
-    ASSERT_NE(out.find("DONE"), std::string::npos) << out;
+// One Blender run (build, export, import, Cycles; ~5 s) for both tests, in a folder of
+// its own.
+class BlenderLights : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        // Per process: ctest may run the two tests at once, each in its own process.
+        s_dir = std::filesystem::temp_directory_path() /
+                ("penumbra_BlenderLights_" + std::to_string(getpid()));
+        std::filesystem::remove_all(s_dir);
+        std::filesystem::create_directories(s_dir);
+        if (!std::filesystem::exists("/usr/bin/blender")) return;
+        s_out = run_shell(blender_path_env() + " /usr/bin/blender -b --factory-startup --python '" +
+                          test::source_path("tests/apps/blender_lights_scene.py") + "' -- '" +
+                          s_dir.string() + "/' " + std::to_string(kWidth) + " " +
+                          std::to_string(kHeight) + " " + std::to_string(kSpp));
+    }
+    static void TearDownTestSuite() { std::filesystem::remove_all(s_dir); }
+    void SetUp() override {
+        // scripts/setup.sh --test (which scripts/test.sh runs) installs it.
+        ASSERT_TRUE(std::filesystem::exists("/usr/bin/blender"))
+            << "blender is not installed (Debian package blender; scripts/setup.sh --test)";
+        ASSERT_NE(s_out.find("DONE"), std::string::npos) << s_out;
+    }
+    static std::string file(const std::string& name) { return (s_dir / name).string(); }
+
+    static std::filesystem::path s_dir;
+    static std::string s_out;  // Blender's output
+};
+std::filesystem::path BlenderLights::s_dir;
+std::string BlenderLights::s_out;
+
+// The light a file's light i sends to a receiver at p facing +Y (glTF's up).
+Spectrum light_at(const Scene& scene, size_t i, Vec3 p) {
+    const auto ls = scene.lights.at(i)->sample_Li({p, {0, 1, 0}}, {0.5f, 0.5f}, 0);
+    return ls ? ls->Li : Spectrum(0);
+}
+
+// The three lighting modes of Blender's exporter, read as docs/conventions.md says:
+// Standard (photometric) and Unitless (radiometric) give Blender's P / (4 pi) W/sr and
+// S W/m^2; Raw read radiometrically has the suns right and point and spot lights 4 pi
+// too bright.
+TEST_F(BlenderLights, LightingModesMapAsDocumented) {
+    const Scene standard = load_gltf(file("all.gltf"));
+    GltfLoadOptions radiometric;
+    radiometric.light_units = LightUnits::Radiometric;
+    const Scene unitless = load_gltf(file("unitless.gltf"), radiometric);
+    const Scene raw = load_gltf(file("raw.gltf"), radiometric);
+    ASSERT_EQ(standard.lights.size(), 3u);
+    ASSERT_EQ(unitless.lights.size(), 3u);
+    ASSERT_EQ(raw.lights.size(), 3u);
+    // Floor points below the point light (Blender's (2, -0.5, 2.5), glTF's (2, 2.5, 0.5))
+    // and the spot (-2, 4, 0.5), and anywhere for the sun; Blender's 300 W, 800 W, 1.5 W/m^2.
+    const Vec3 receivers[3] = {{2, 0, 0.5f}, {-2, 0, 0.5f}, {0, 0, 0}};
+    const float expected[3] = {300 / (4 * kPi) / (2.5f * 2.5f), 800 / (4 * kPi) / 16, 1.5f};
+    const float raw_factor[3] = {4 * kPi, 4 * kPi, 1};
+    for (size_t i = 0; i < 3; ++i) {
+        const float s = light_at(standard, i, receivers[i]).y;
+        EXPECT_NEAR(s, expected[i], 1e-5f * expected[i]) << standard.lights[i]->describe();
+        EXPECT_NEAR(light_at(unitless, i, receivers[i]).y, s, 1e-6f * s) << i;
+        EXPECT_NEAR(light_at(raw, i, receivers[i]).y, raw_factor[i] * s, 1e-6f * raw_factor[i] * s)
+            << i;
+    }
+}
+
+TEST_F(BlenderLights, CyclesAndPenumbraAgreeOnBlenderExportedLights) {
+    const std::string& out = s_out;
     // The importer inverts the exporter: Blender's own numbers come back.
     for (const char* line :
          {"IMPORTED all POINT 300", "IMPORTED all SPOT 800", "IMPORTED all SUN 1.5"})
@@ -128,17 +187,16 @@ TEST(BlenderLights, CyclesAndPenumbraAgreeOnBlenderExportedLights) {
         std::vector<double> pen[2], cyc[2];
         for (int seed = 1; seed <= 2; ++seed) {
             const std::string exr =
-                dir.file("penumbra_" + variant + "_" + std::to_string(seed) + ".exr");
+                file("penumbra_" + variant + "_" + std::to_string(seed) + ".exr");
             const int spp = variant == "all" ? 8 * kSpp : kSpp;
-            const test::CliResult r =
-                test::run_penumbra({"render", dir.file(variant + ".gltf"), "-o", exr, "--width",
-                                    std::to_string(kWidth), "--spp", std::to_string(spp), "--seed",
-                                    std::to_string(seed), "--integrator", "direct", "--filter",
-                                    "box", "--no-preview", "-q"});
+            const test::CliResult r = test::run_penumbra(
+                {"render", file(variant + ".gltf"), "-o", exr, "--width", std::to_string(kWidth),
+                 "--spp", std::to_string(spp), "--seed", std::to_string(seed), "--integrator",
+                 "direct", "--filter", "box", "--no-preview", "-q"});
             ASSERT_EQ(r.status, 0) << r.output;
             pen[seed - 1] = read_rgb_sum(exr);
             cyc[seed - 1] =
-                read_rgb_sum(dir.file("cycles_" + variant + "_" + std::to_string(seed) + ".exr"));
+                read_rgb_sum(file("cycles_" + variant + "_" + std::to_string(seed) + ".exr"));
         }
         for (const std::string& name : names) {
             const RegionMean p = region_mean(pen[0], pen[1], regions.at(name));
