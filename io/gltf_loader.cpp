@@ -184,7 +184,7 @@ GltfAnimations load_gltf_animations(const std::string& path) {
 
 Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
     const tinygltf::Model model = parse(path);
-    GltfContext ctx{model, path, options.rec709_to_working};
+    GltfContext ctx{model, path, options.rec709_to_working, options.light_units};
     check_asset_and_extensions(ctx);
     ctx.variant = find_variant(ctx, options.variant);
 

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "core/lights/light_units.h"
 #include "core/math/mat3.h"
 #include "core/scene/scene.h"
 
@@ -23,6 +24,8 @@ struct GltfLoadOptions {
     // KHR_materials_variants: the variant whose materials primitives use where they map
     // one; empty: every primitive's default material. An unknown name is a SceneError.
     std::string variant = "";
+    // KHR_lights_punctual intensities: photometric (cd, lux; the spec's) or radiometric.
+    LightUnits light_units = LightUnits::Photometric;
 };
 
 // Loads the file at path; throws SceneError for bad input, including a shutter that

@@ -26,6 +26,9 @@ struct JobSettings {
     std::optional<std::string> ocio_config, working_space, output_colorspace, display, view,
         look, aov, compression;
     std::optional<bool> half;
+    // Light: as --light-units, --default-light and --exposure (stops).
+    std::optional<std::string> light_units, default_light;
+    std::optional<double> exposure;
 };
 
 struct JobEntry {
