@@ -46,12 +46,39 @@ if "FINISHED" not in result:
 if not any(o.type == "MESH" for o in bpy.data.objects):
     fail("import produced no mesh")
 import_s = time.time() - start
+# The importer leaves primitives without a material on Blender's grey default surface; the
+# glTF spec's default material is white, metallic 1, roughness 1 (as penumbra's).
+default = bpy.data.materials.new("glTF default")
+default.use_nodes = True
+bsdf = default.node_tree.nodes["Principled BSDF"]
+bsdf.inputs["Base Color"].default_value = (1, 1, 1, 1)
+bsdf.inputs["Metallic"].default_value = 1
+bsdf.inputs["Roughness"].default_value = 1
+for o in bpy.data.objects:
+    if o.type == "MESH":
+        if not o.material_slots:
+            o.data.materials.append(default)
+        for slot in o.material_slots:
+            if slot.material is None:
+                slot.material = default
 if job.get("import_only"):  # penumbra failed: only say whether Blender loads the file
     print("CROSSCHECK " + json.dumps({"import_s": import_s, "render_s": {}}))
     sys.exit(0)
 
 scene = bpy.context.scene
-# glTF time 0 is frame 0 for the importer (key time * fps); penumbra renders --time 0.
+# penumbra plays all of a file's animations together, the first one winning a property
+# two animate (docs/conventions.md); the importer makes the first the active action and
+# stashes the others in muted NLA tracks, later animations lower. Unmuted, with each strip
+# held before its start, every animation shows its first key at frame 0, which is glTF's
+# value at t = 0 (key times are >= 0 and sampling clamps before the first), the time
+# penumbra renders. Not valid for other times: the strips start at scene.frame_start.
+for o in bpy.data.objects:
+    if o.animation_data:
+        for track in o.animation_data.nla_tracks:
+            track.mute = False
+            for strip in track.strips:
+                strip.extrapolation = "HOLD"
+# glTF time t is frame t * fps for the active action (the importer's key times).
 scene.frame_set(0)
 
 

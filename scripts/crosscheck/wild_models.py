@@ -29,11 +29,33 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 SHARED = os.path.join(os.path.dirname(ROOT), "shared", "scenes")
 NO_HIT_DEPTH = 1e10  # penumbra's Depth AOV where no sample hit (Film::kNoHitDepth)
 LUMINANCE = (0.2126, 0.7152, 0.0722)  # Rec.709 / sRGB primaries, penumbra's working space
+FURNACE = "furnace/material-spheres"
+GRID = 5  # furnace_spheres' rows and columns
 
 
-def discover(which):
-    """(label, path) of every .gltf/.glb under the chosen shared folders."""
+def furnace_spheres(out_dir):
+    """scenes/material-spheres.gltf (5 x 5 spheres, metallic down, roughness across, one
+    per 1/5 x 1/5 of a square image) with white base colour and without its key light: a
+    white furnace sweep where model differences show sphere by sphere."""
+    doc = json.load(open(os.path.join(ROOT, "scenes", "material-spheres.gltf")))
+    doc.pop("extensionsUsed", None)
+    doc.pop("extensions", None)
+    for node in doc["nodes"]:
+        node.pop("extensions", None)
+    for m in doc["materials"]:
+        m["pbrMetallicRoughness"]["baseColorFactor"] = [1.0, 1.0, 1.0, 1.0]
+    path = os.path.join(out_dir, "furnace-spheres.gltf")
+    with open(path, "w") as f:
+        json.dump(doc, f)
+    return path
+
+
+def discover(which, out_dir):
+    """(label, path) of every .gltf/.glb under the chosen shared folders, and the furnace
+    sweep."""
     models = []
+    if which in ("furnace", "all"):
+        models.append((FURNACE, furnace_spheres(out_dir)))
     if which in ("wild", "all"):
         wild = os.path.join(SHARED, "wild")
         for folder in sorted(os.listdir(wild)):
@@ -188,7 +210,7 @@ def ratio(p, c):
     return r, r * math.hypot(sp / mp, sc / mc)
 
 
-def compare(args, pen, cyc, env):
+def compare(pen, cyc, env, cells=False):
     """Ratios over the image and over the model's pixels, coverage agreement and noise."""
     p1, p2 = (pixels(f, ["R", "G", "B", "Depth.Z"]) for f in pen)
     c1, c2 = (pixels(f, ["R", "G", "B", "A"]) for f in cyc)
@@ -213,22 +235,33 @@ def compare(args, pen, cyc, env):
             "penumbra_pixel_noise": ps[3][2] / ps[3][0] if ps[3][0] > 0 else float("nan"),
             "cycles_pixel_noise": cs[3][2] / cs[3][0] if cs[3][0] > 0 else float("nan"),
         }
+    if cells:
+        # Per sphere: the model's pixels inside its cell of the grid.
+        w = int(round(math.sqrt(len(p1))))
+        result["cells"] = []
+        for row in range(GRID):
+            for col in range(GRID):
+                mask = [m and (i % w) * GRID // w == col and (i // w) * GRID // w == row
+                        for i, m in enumerate(model)]
+                ps, cs = region_stats(p1, p2, mask), region_stats(c1, c2, mask)
+                result["cells"].append({"row": row, "col": col, "penumbra_Y": ps[3][0],
+                                        "cycles_Y": cs[3][0], "ratio": ratio(ps[3], cs[3])})
     return result
 
 
-def side_by_side(pen, cyc, env, size, png):
-    """penumbra | Cycles (over the environment) | ratio / 2 (grey 0.5 where they agree),
-    as an sRGB PNG."""
+def side_by_side(pen, cyc, env, stem):
+    """STEM-penumbra.exr and STEM-cycles.exr (over the environment), both seeds averaged,
+    and STEM.png: penumbra | Cycles | ratio / 2 (grey 0.5 where they agree), sRGB."""
     w, h, _, _ = exr_header(pen[0])
     color = ",".join(str(c) for c in env) + ",1"
+    p, c, r = stem + "-penumbra.exr", stem + "-cycles.exr", stem + "-ratio.exr"
     subprocess.run(
-        ["oiiotool", pen[0], pen[1], "--add", "--mulc", "0.5", "--ch", "R,G,B", "-o",
-         png + ".pen.exr",
+        ["oiiotool", pen[0], pen[1], "--add", "--mulc", "0.5", "--ch", "R,G,B", "-o", p,
          cyc[0], cyc[1], "--add", "--mulc", "0.5", "--pattern", "constant:color=" + color,
-         "%dx%d" % (w, h), "4", "--over", "--ch", "R,G,B", "-o", png + ".cyc.exr",
-         png + ".pen.exr", png + ".cyc.exr", "--div", "--mulc", "0.5", "-o", png + ".ratio.exr",
-         png + ".pen.exr", png + ".cyc.exr", png + ".ratio.exr", "--mosaic:pad=4", "3x1",
-         "--colorconvert", "linear", "sRGB", "-d", "uint8", "-o", png],
+         "%dx%d" % (w, h), "4", "--over", "--ch", "R,G,B", "-o", c,
+         p, c, "--div", "--mulc", "0.5", "-o", r,
+         p, c, r, "--mosaic:pad=4", "3x1", "--colorconvert", "linear", "sRGB", "-d", "uint8",
+         "-o", stem + ".png"],
         check=True, capture_output=True)
 
 
@@ -261,9 +294,23 @@ def table(results):
     return "\n".join(lines)
 
 
+def cell_table(cells):
+    """The furnace sweep: penumbra's and Cycles' mean luminance per sphere and their ratio."""
+    lines = ["| metallic \\ roughness | " + " | ".join("%.2f" % (c / (GRID - 1))
+                                                     for c in range(GRID)) + " |",
+             "|---" * (GRID + 1) + "|"]
+    for row in range(GRID):
+        cols = []
+        for c in cells[row * GRID:(row + 1) * GRID]:
+            cols.append("%.3f / %.3f = %s" % (c["penumbra_Y"], c["cycles_Y"],
+                                             fmt_ratio(c["ratio"])))
+        lines.append("| %.2f | " % (row / (GRID - 1)) + " | ".join(cols) + " |")
+    return "\n".join(lines)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--set", choices=["wild", "khronos", "all"], default="all")
+    ap.add_argument("--set", choices=["wild", "khronos", "furnace", "all"], default="all")
     ap.add_argument("--models", nargs="*", help="only labels containing one of these")
     ap.add_argument("--size", type=int, default=160, help="image width and height")
     ap.add_argument("--spp", type=int, default=64, help="samples per pixel, over both seeds")
@@ -277,7 +324,7 @@ def main():
     if args.spp < 2:
         ap.error("--spp must be at least 2 (two seeds)")
     os.makedirs(args.out, exist_ok=True)
-    models = discover(args.set)
+    models = discover(args.set, args.out)
     if args.models:
         models = [m for m in models if any(k.lower() in m[0].lower() for k in args.models)]
     results = []
@@ -300,13 +347,17 @@ def main():
             cyc = ["%s-cycles-%d.exr" % (stem, s) for s in (1, 2)]
             r["penumbra_s"], r["cycles_s"] = pen_s, sum(info["render_s"].values())
             r["cycles_import_s"] = info["import_s"]
-            r["stats"] = compare(args, pen, cyc, args.env)
-            side_by_side(pen, cyc, args.env, args.size, stem + ".png")
+            r["stats"] = compare(pen, cyc, args.env, cells=label == FURNACE)
+            side_by_side(pen, cyc, args.env, stem)
         results.append(r)
         print(table([r]).splitlines()[-1], flush=True)
     with open(os.path.join(args.out, "results.json"), "w") as f:
         json.dump({"args": vars(args), "results": results}, f, indent=1)
     report = table(results)
+    for r in results:
+        if r.get("stats", {}).get("cells"):
+            report += "\n\n" + r["model"] + ": penumbra / Cycles luminance per sphere\n\n" + \
+                cell_table(r["stats"]["cells"])
     with open(os.path.join(args.out, "report.md"), "w") as f:
         f.write(report + "\n")
     print()
