@@ -276,7 +276,10 @@ def table(results):
              "|---|---|---|---|---|---|---|---|---|---|"]
     for r in results:
         s = r.get("stats")
-        pen = "ok" if not r["penumbra_error"] else "FAILED: " + r["penumbra_error"]
+        # penumbra's messages start "error: FILE: "; the model column names the file.
+        short = (r["penumbra_error"] or "").replace("error: ", "", 1).replace(
+            os.path.abspath(r["scene"]) + ": ", "").replace(r["scene"] + ": ", "")
+        pen = "ok" if not r["penumbra_error"] else "FAILED: " + short
         cyc = "ok" if not r["cycles_error"] else "FAILED: " + r["cycles_error"]
         if r["cycles_error"] is None and s is None:
             cyc = "imports (not rendered)"
