@@ -38,7 +38,8 @@ def fail(message):
 bpy.ops.wm.read_factory_settings(use_empty=True)
 start = time.time()
 try:
-    result = bpy.ops.import_scene.gltf(filepath=job["scene"])
+    result = bpy.ops.import_scene.gltf(filepath=job["scene"],
+                                       convert_lighting_mode=job.get("lighting_mode", "SPEC"))
 except Exception as e:  # the importer reports ImportError as a RuntimeError here
     fail("import failed: %s" % e)
 if "FINISHED" not in result:
@@ -46,6 +47,12 @@ if "FINISHED" not in result:
 if not any(o.type == "MESH" for o in bpy.data.objects):
     fail("import produced no mesh")
 import_s = time.time() - start
+# glTF's lights are points and a sun of no angular size; Blender's new lights are spheres
+# of radius 0.25 and a sun of 0.53 degrees, which the importer keeps.
+for light in bpy.data.lights:
+    light.shadow_soft_size = 0
+    if light.type == "SUN":
+        light.angle = 0
 # The importer leaves primitives without a material on Blender's grey default surface; the
 # glTF spec's default material is white, metallic 1, roughness 1 (as penumbra's).
 default = bpy.data.materials.new("glTF default")

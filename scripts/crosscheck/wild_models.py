@@ -17,12 +17,14 @@ import json
 import math
 import os
 import re
-import struct
+import shutil
 import subprocess
 import sys
+import tempfile
 import time
 
 from compare_cycles import blender_env
+from gltf_sun import read_json, with_sun
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -74,21 +76,11 @@ def discover(which, out_dir):
     return models
 
 
-def gltf_json(path):
-    """The JSON of a .gltf or of a .glb's first chunk."""
-    with open(path, "rb") as f:
-        data = f.read()
-    if data[:4] == b"glTF":
-        length, kind = struct.unpack_from("<II", data, 12)
-        return json.loads(data[20:20 + length].decode("utf-8"))
-    return json.loads(data.decode("utf-8"))
-
-
 def features(path):
     """A short list of what the file uses: extensions (KHR_materials_ shortened), skins,
     animations, cameras."""
     try:
-        doc = gltf_json(path)
+        doc = read_json(path)
     except (OSError, ValueError) as e:
         return "unreadable (%s)" % e
     required = set(doc.get("extensionsRequired", []))
@@ -148,6 +140,7 @@ def penumbra_render(args, scene, out, seed):
            str(args.size), "--spp", str(args.spp // 2), "--seed", str(seed), "--filter", "box",
            "--max-depth", str(args.max_depth), "--no-default-light", "--env-color"] + \
           [str(c) for c in args.env] + \
+          (["--camera", args.camera] if args.camera else []) + \
           ["--aperture-radius", "0", "--aov", "depth", "--threads", str(args.threads),
            "--timing-metadata", "--no-preview", "-q", "--overwrite"]
     rc, log, wall = run(cmd, args.timeout)
@@ -160,7 +153,7 @@ def penumbra_render(args, scene, out, seed):
 def cycles_render(args, scene, prefix, header):
     job = {"scene": os.path.abspath(scene), "out_prefix": prefix, "spp": args.spp // 2,
            "seeds": [1, 2], "max_depth": args.max_depth, "threads": args.threads,
-           "env": list(args.env)}
+           "env": list(args.env), "lighting_mode": args.blender_lighting}
     if header:
         width, height, _, attrs = header
         job.update(width=width, height=height, world_to_camera=floats(attrs["worldToCamera"]),
@@ -319,6 +312,14 @@ def main():
     ap.add_argument("--spp", type=int, default=64, help="samples per pixel, over both seeds")
     ap.add_argument("--max-depth", type=int, default=8, help="bounce limit for both renderers")
     ap.add_argument("--env", type=float, nargs=3, default=[1.0, 1.0, 1.0])
+    ap.add_argument("--sun", type=float, default=0, metavar="LUX",
+                    help="add a white directional light of LUX lux to every model (0: none)")
+    ap.add_argument("--sun-from", type=float, nargs=3, default=[-0.5, 1.0, 0.7],
+                    metavar=("X", "Y", "Z"), help="direction towards the sun, glTF world")
+    ap.add_argument("--blender-lighting", choices=["SPEC", "COMPAT", "RAW"], default="SPEC",
+                    help="the importer's light units: SPEC W = lux / 683 (its default), "
+                         "COMPAT W = lux")
+    ap.add_argument("--camera", help="penumbra's --camera (name or index) for every model")
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--timeout", type=int, default=900, help="seconds per render call")
     ap.add_argument("--out", default=os.path.join(ROOT, "out", "crosscheck"))
@@ -331,7 +332,10 @@ def main():
     if args.models:
         models = [m for m in models if any(k.lower() in m[0].lower() for k in args.models)]
     results = []
+    scratch = tempfile.mkdtemp(prefix="crosscheck-sun-") if args.sun > 0 else None
     for label, scene in models:
+        if scratch:
+            scene = with_sun(scene, scratch, args.sun, args.sun_from)
         stem = os.path.join(args.out, label.replace("/", "_"))
         r = {"model": label, "scene": scene, "features": features(scene),
              "penumbra_error": None, "cycles_error": None}
@@ -354,6 +358,8 @@ def main():
             side_by_side(pen, cyc, args.env, stem)
         results.append(r)
         print(table([r]).splitlines()[-1], flush=True)
+    if scratch:
+        shutil.rmtree(scratch)
     with open(os.path.join(args.out, "results.json"), "w") as f:
         json.dump({"args": vars(args), "results": results}, f, indent=1)
     report = table(results)
