@@ -138,8 +138,9 @@ depth = job["max_depth"]
 for attr in ("max_bounces", "diffuse_bounces", "glossy_bounces", "transmission_bounces",
              "volume_bounces"):
     setattr(scene.cycles, attr, depth)
-# penumbra passes alpha-masked and blended surfaces without counting a bounce.
-scene.cycles.transparent_max_bounces = 64
+# penumbra passes up to 256 alpha-masked or blended surfaces without counting a bounce
+# (integrators/path_integrator.cpp).
+scene.cycles.transparent_max_bounces = 256
 scene.cycles.caustics_reflective = True
 scene.cycles.caustics_refractive = True
 scene.cycles.blur_glossy = 0
