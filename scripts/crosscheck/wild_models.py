@@ -304,6 +304,24 @@ def cell_table(cells):
     return "\n".join(lines)
 
 
+def changes(results, baseline):
+    """Models whose status or model luminance ratio moved beyond 3 combined standard
+    errors since a baseline results.json."""
+    before = {r["model"]: r for r in json.load(open(baseline))["results"]}
+    lines = ["| model | before | now |", "|---|---|---|"]
+    for r in results:
+        b = before.get(r["model"])
+        old = fmt_ratio(b["stats"]["model"]["ratio"][3]) if b and b.get("stats") else "failed"
+        new = fmt_ratio(r["stats"]["model"]["ratio"][3]) if r.get("stats") else "failed"
+        if old != "failed" and new != "failed":
+            (v0, e0), (v1, e1) = b["stats"]["model"]["ratio"][3], r["stats"]["model"]["ratio"][3]
+            if abs(v1 - v0) <= 3 * math.hypot(e0, e1):
+                continue
+        if old != new:
+            lines.append("| %s | %s | %s |" % (r["model"], old, new))
+    return "\n".join(lines)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--set", choices=["wild", "khronos", "furnace", "all"], default="all")
@@ -323,6 +341,7 @@ def main():
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--timeout", type=int, default=900, help="seconds per render call")
     ap.add_argument("--out", default=os.path.join(ROOT, "out", "crosscheck"))
+    ap.add_argument("--baseline", help="an earlier results.json: list what changed")
     ap.add_argument("--penumbra", default=os.path.join(ROOT, "build", "bin", "penumbra"))
     args = ap.parse_args()
     if args.spp < 2:
@@ -367,6 +386,8 @@ def main():
         if r.get("stats", {}).get("cells"):
             report += "\n\n" + r["model"] + ": penumbra / Cycles luminance per sphere\n\n" + \
                 cell_table(r["stats"]["cells"])
+    if args.baseline:
+        report += "\n\nChanged since %s:\n\n%s" % (args.baseline, changes(results, args.baseline))
     with open(os.path.join(args.out, "report.md"), "w") as f:
         f.write(report + "\n")
     print()
