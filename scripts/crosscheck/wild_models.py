@@ -306,8 +306,8 @@ def cell_table(cells):
 
 def changes(results, baseline):
     """Models whose status or model luminance ratio moved beyond 3 combined standard
-    errors since a baseline results.json."""
-    before = {r["model"]: r for r in json.load(open(baseline))["results"]}
+    errors since a baseline (an earlier results.json's content)."""
+    before = {r["model"]: r for r in baseline["results"]}
     lines = ["| model | before | now |", "|---|---|---|"]
     for r in results:
         b = before.get(r["model"])
@@ -347,6 +347,7 @@ def main():
     if args.spp < 2:
         ap.error("--spp must be at least 2 (two seeds)")
     os.makedirs(args.out, exist_ok=True)
+    baseline = json.load(open(args.baseline)) if args.baseline else None  # before --out's
     models = discover(args.set, args.out)
     if args.models:
         models = [m for m in models if any(k.lower() in m[0].lower() for k in args.models)]
@@ -387,7 +388,7 @@ def main():
             report += "\n\n" + r["model"] + ": penumbra / Cycles luminance per sphere\n\n" + \
                 cell_table(r["stats"]["cells"])
     if args.baseline:
-        report += "\n\nChanged since %s:\n\n%s" % (args.baseline, changes(results, args.baseline))
+        report += "\n\nChanged since %s:\n\n%s" % (args.baseline, changes(results, baseline))
     with open(os.path.join(args.out, "report.md"), "w") as f:
         f.write(report + "\n")
     print()
