@@ -107,6 +107,34 @@ TEST(GltfBsdf, SamplesFollowThePdf) {
         }
 }
 
+TEST(GltfBsdf, HardCasesFollowThePdf) {
+    // Grazing views (cos 0.01), roughness 0 and 1 in every layer, narrow coats.
+    std::vector<Stack> stacks;
+    Stack s;
+    s.metallic = 1, s.roughness = 1, s.coat = 1, s.coat_roughness = 1;
+    stacks.push_back(s);
+    s = Stack{};
+    s.roughness = 0, s.sheen = Spectrum(1), s.sheen_roughness = 0;  // over a mirror layer
+    stacks.push_back(s);
+    s = Stack{};
+    s.roughness = 1, s.coat = 1, s.coat_roughness = 0.05f, s.sheen = Spectrum(1);
+    s.sheen_roughness = 1;
+    stacks.push_back(s);
+    s.coat_normal = kTilted;
+    stacks.push_back(s);
+    test::BsdfChi2Options o;
+    o.samples = 100000;
+    o.significance = test::sidak_significance(0.01, 2 * stacks.size());
+    int seed = 930;
+    for (const Stack& st : stacks)
+        for (float cos_o : {0.01f, 1.0f}) {
+            const Vec3 wo = spherical_direction(cos_o, 2.9f);
+            o.seed = ++seed;
+            const test::Chi2Result r = test::bsdf_chi2(make(st), wo, o);
+            EXPECT_TRUE(r.passed) << describe(st, wo) << "\n" << r.report;
+        }
+}
+
 TEST(GltfBsdf, CoatOverTransmissionSamplesFollowThePdf) {
     test::BsdfChi2Options o;
     o.samples = 100000;

@@ -64,17 +64,22 @@ void expect_same(const Bsdf& a, const Bsdf& b, bool sphere = false) {
 const Vec3 kUp(0, 0, 1);
 
 TEST(ShadeLayers, InactiveLayersKeepThePlainModel) {
-    Scene scene;
-    MaterialDesc m = dielectric();
-    m.clearcoat = 0;
-    m.clearcoat_texture.texture = add_texture(scene, {1, 1, 1, 1});
-    m.sheen_color = {0, 0, 0};
-    m.diffuse_transmission = 0.5f;
-    m.diffuse_transmission_texture.texture = add_texture(scene, {1, 1, 1, 0});  // A = 0
-    scene.materials.push_back(m);
-    const ShadingData sd = shade(scene, flat_point(0), kUp);
-    ASSERT_NE(dynamic_cast<const MetalRoughBsdf*>(sd.bsdf.get()), nullptr);
-    expect_same(*sd.bsdf.get(), MetalRoughBsdf(params_of(m)));
+    // Factors 1 with textures at 0, and factors 0 with textures at 1.
+    for (float factor : {1.0f, 0.0f}) {
+        Scene scene;
+        const Vec4 texel(1 - factor, 1 - factor, 1 - factor, 1 - factor);
+        MaterialDesc m = dielectric();
+        m.clearcoat = factor;
+        m.clearcoat_texture.texture = add_texture(scene, texel);
+        m.sheen_color = Spectrum(factor);
+        m.sheen_color_texture.texture = add_texture(scene, texel);
+        m.diffuse_transmission = factor;
+        m.diffuse_transmission_texture.texture = add_texture(scene, texel);
+        scene.materials.push_back(m);
+        const ShadingData sd = shade(scene, flat_point(0), kUp);
+        ASSERT_NE(dynamic_cast<const MetalRoughBsdf*>(sd.bsdf.get()), nullptr) << factor;
+        expect_same(*sd.bsdf.get(), MetalRoughBsdf(params_of(m)));
+    }
 }
 
 TEST(ShadeLayers, TexturesScaleTheLayers) {
