@@ -40,7 +40,12 @@ float CharlieSheen::value(Vec3 wo, Vec3 wi) const {
     Vec3 h = wo + wi;
     if (length_squared(h) == 0) return 0;
     h = normalize(h);
-    const float v = 1 / ((1 + lambda(wo.z) + lambda(wi.z)) * 4 * wo.z * wi.z);
+    // Cosines below kMinCos are taken as kMinCos in V: as cos_o -> 0, Lambda tends to a
+    // constant, so 1 / (Lambda 4 cos_o) and with it the albedo diverge (E reaches 1.2 at
+    // cos_o 1e-6 and 2.4 at 1e-7 for r 0.07). Clamped, E stays below its value at 1e-4
+    // (< 0.9). Symmetric in wo and wi, so still reciprocal.
+    const float co = std::max(wo.z, kMinCos), ci = std::max(wi.z, kMinCos);
+    const float v = 1 / ((1 + lambda(co) + lambda(ci)) * 4 * co * ci);
     return D(h) * v;
 }
 

@@ -15,14 +15,15 @@ namespace penumbra {
 class CharlieSheen {
 public:
     static constexpr float kMinRoughness = 0.07f;
+    static constexpr float kMinCos = 1e-4f;  // see value()
     explicit CharlieSheen(float roughness);
     float roughness() const { return m_r; }
     // D(h) = (2 + 1/r) sin(theta_h)^(1/r) / (2 pi); h in the upper hemisphere.
     float D(Vec3 h) const;
     // Lambda(cos theta) from the paper's fitted curve, mirrored about cos 0.5 (eq. 3-4).
     float lambda(float cos_theta) const;
-    // D V with V = 1 / ((1 + Lambda(wo) + Lambda(wi)) 4 cos_o cos_i); 0 unless both are
-    // above the horizon. No cosine.
+    // D V with V = 1 / ((1 + Lambda(wo) + Lambda(wi)) 4 cos_o cos_i), cosines clamped to
+    // kMinCos; 0 unless both are above the horizon. No cosine.
     float value(Vec3 wo, Vec3 wi) const;
 
 private:

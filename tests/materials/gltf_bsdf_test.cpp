@@ -248,6 +248,65 @@ TEST(GltfBsdf, FactorZeroIsTheCore) {
     }
 }
 
+bool finite_nonneg(const Spectrum& f) {
+    for (int c = 0; c < 3; ++c)
+        if (!std::isfinite(f[c]) || f[c] < 0) return false;
+    return true;
+}
+
+TEST(GltfBsdf, ExtremesStayFiniteAndConserveEnergy) {
+    // Roughness 0 and 1 in every layer, tilted coats, transmission; wo from straight on
+    // to exactly grazing and below the surface; eval and pdf against grazing wi.
+    const float cosines[] = {1.0f, 1e-2f, 1e-4f, 1e-6f, 0.0f, -1e-3f, -0.5f};
+    Rng rng(97);
+    int checked = 0;
+    float worst = 0;
+    for (int v = 0; v < 32; ++v) {
+        Stack s;
+        s.base = Spectrum(1);
+        s.roughness = v % 2 ? 1.0f : 0.0f;
+        s.coat = 1, s.coat_roughness = v / 2 % 2 ? 1.0f : 0.0f;
+        s.sheen = v / 4 % 2 ? Spectrum(1) : Spectrum(0);
+        s.sheen_roughness = v / 2 % 2 ? 0.0f : 1.0f;
+        s.coat_normal = v / 8 % 2 ? kTilted : Vec3(0, 0, 1);
+        s.transmission = v / 16 ? 1.0f : 0.0f;
+        const GltfBsdf bsdf = make(s);
+        for (float cos_o : cosines) {
+            const Vec3 wo = spherical_direction(cos_o, 0.7f);
+            for (int i = 0; i < 100; ++i) {
+                const float cos_i = i < 7 ? cosines[i] : 2 * rng.next_float() - 1;
+                const Vec3 wi = spherical_direction(cos_i, 6.28318f * rng.next_float());
+                for (Transport mode : {Transport::Radiance, Transport::Importance}) {
+                    ASSERT_TRUE(finite_nonneg(bsdf.eval(wo, wi, mode))) << describe(s, wo);
+                    const float pdf = bsdf.pdf(wo, wi, mode);
+                    ASSERT_TRUE(std::isfinite(pdf) && pdf >= 0) << describe(s, wo);
+                }
+            }
+            const int n = 20000;
+            double sum = 0, sum2 = 0;
+            for (int i = 0; i < n; ++i) {
+                const auto r = bsdf.sample(wo, rng.next_float(),
+                                           {rng.next_float(), rng.next_float()},
+                                           Transport::Radiance);
+                if (!r) continue;
+                ASSERT_TRUE(finite_nonneg(r->weight()) && r->pdf > 0) << describe(s, wo);
+                ASSERT_NEAR(length(r->wi), 1.0f, 1e-4f) << describe(s, wo);
+                // Refracted radiance carries 1/eta^2, which is not energy.
+                if (r->eta != 1) continue;
+                sum += r->weight().y;
+                sum2 += r->weight().y * r->weight().y;
+            }
+            const double albedo = sum / n;
+            const double se = std::sqrt(std::max(0.0, sum2 / n - albedo * albedo) / n);
+            // 3 sigma and the tables' interpolation error.
+            EXPECT_LE(albedo, 1 + 3 * se + 2e-3) << describe(s, wo) << ": +- " << se;
+            worst = std::max(worst, float(albedo));
+            ++checked;
+        }
+    }
+    std::printf("GltfBsdf extremes: %d cases, largest albedo %.4f\n", checked, worst);
+}
+
 TEST(GltfBsdf, TiltedCoatImportanceIsTheAdjoint) {
     Stack s;
     s.coat = 1, s.coat_roughness = 0.4f, s.coat_normal = kTilted, s.sheen = Spectrum(0.5f);
