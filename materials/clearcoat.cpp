@@ -26,8 +26,8 @@ float ClearcoatLobe::eval(Vec3 wo, Vec3 wi, Transport mode) const {
     Vec3 h = o + i;
     if (length_squared(h) == 0) return 0;
     h = normalize(h);
-    const float f = m_c * fresnel(std::max(0.0f, dot(o, h))) * m_dist.D(h) * m_dist.G(o, i) /
-                    (4 * o.z * i.z);
+    const float f =
+        m_c * fresnel(std::max(0.0f, dot(o, h))) * m_dist.D(h) * m_dist.G(o, i) / (4 * o.z * i.z);
     return mode == Transport::Radiance ? f * (i.z / wi.z) : f * (o.z / wo.z);
 }
 

@@ -55,19 +55,27 @@ void GltfDiffuseTransmissionBsdf::probabilities(Vec3 wo, float q[kCount]) const 
 Spectrum GltfDiffuseTransmissionBsdf::eval_component(int c, Vec3 wo, Vec3 wi,
                                                      Transport mode) const {
     switch (c) {
-        case kMetal: return m_metal.eval(wo, wi, mode);
-        case kOpaque: return m_opaque.eval(wo, wi, mode);
-        case kDiffuseTransmission: return m_dt.eval(wo, wi);
-        default: return m_glass.eval(wo, wi, mode);
+        case kMetal:
+            return m_metal.eval(wo, wi, mode);
+        case kOpaque:
+            return m_opaque.eval(wo, wi, mode);
+        case kDiffuseTransmission:
+            return m_dt.eval(wo, wi);
+        default:
+            return m_glass.eval(wo, wi, mode);
     }
 }
 
 float GltfDiffuseTransmissionBsdf::pdf_component(int c, Vec3 wo, Vec3 wi, Transport mode) const {
     switch (c) {
-        case kMetal: return m_metal.pdf(wo, wi, mode);
-        case kOpaque: return m_opaque.pdf(wo, wi, mode);
-        case kDiffuseTransmission: return m_dt.pdf(wo, wi);
-        default: return m_glass.pdf(wo, wi, mode);
+        case kMetal:
+            return m_metal.pdf(wo, wi, mode);
+        case kOpaque:
+            return m_opaque.pdf(wo, wi, mode);
+        case kDiffuseTransmission:
+            return m_dt.pdf(wo, wi);
+        default:
+            return m_glass.pdf(wo, wi, mode);
     }
 }
 
@@ -101,7 +109,7 @@ std::optional<BsdfSample> GltfDiffuseTransmissionBsdf::sample(Vec3 wo, float u_l
         const std::optional<Vec3> wi = m_dt.sample(wo, u);
         if (wi) s = BsdfSample{*wi, Spectrum(0), 0, Lobe::Diffuse, 1};
     } else {
-        s = c == kMetal ? m_metal.sample(wo, u_inner, u, mode)
+        s = c == kMetal    ? m_metal.sample(wo, u_inner, u, mode)
             : c == kOpaque ? m_opaque.sample(wo, u_inner, u, mode)
                            : m_glass.sample(wo, u_inner, u, mode);
     }

@@ -10,8 +10,8 @@
 namespace penumbra {
 
 struct DiffuseTransmissionParams {
-    float factor = 0;              // diffuseTransmission (factor x texture A), [0, 1]
-    Spectrum color{1, 1, 1};       // diffuseTransmissionColor (factor x texture RGB)
+    float factor = 0;         // diffuseTransmission (factor x texture A), [0, 1]
+    Spectrum color{1, 1, 1};  // diffuseTransmissionColor (factor x texture RGB)
 };
 
 // eval(M) of MetalRoughBsdf is linear in the metallic M, so the material is
@@ -39,7 +39,7 @@ private:
     Spectrum eval_component(int c, Vec3 wo, Vec3 wi, Transport mode) const;
     float pdf_component(int c, Vec3 wo, Vec3 wi, Transport mode) const;
 
-    float m_w[kCount];  // mixture weights
+    float m_w[kCount];       // mixture weights
     Spectrum m_opaque_base;  // base colour x (1 - dt), for the sampling weights
     float m_f0_max, m_f90;
     MetalRoughBsdf m_metal;

@@ -51,9 +51,7 @@ float CharlieSheen::value(Vec3 wo, Vec3 wi) const {
 
 Spectrum SheenLobe::eval(Vec3 wo, Vec3 wi) const { return m_color * m_sheen.value(wo, wi); }
 
-float SheenLobe::pdf(Vec3 wo, Vec3 wi) const {
-    return wo.z > 0 && wi.z > 0 ? kInv2Pi : 0.0f;
-}
+float SheenLobe::pdf(Vec3 wo, Vec3 wi) const { return wo.z > 0 && wi.z > 0 ? kInv2Pi : 0.0f; }
 
 std::optional<Vec3> SheenLobe::sample(Vec3 wo, Vec2 u) const {
     if (wo.z <= 0) return std::nullopt;

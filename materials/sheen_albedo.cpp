@@ -1,11 +1,11 @@
 #include "materials/sheen_albedo.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
-
-#include <tbb/parallel_for.h>
 
 #include "core/math/vec.h"
 #include "materials/sheen.h"
@@ -56,7 +56,8 @@ Table build_table() {
     Table t;
     tbb::parallel_for(0, kRows, [&](int j) {
         const float r = row_roughness(j);
-        for (int i = 0; i < kColumns; ++i) t[j][i] = integrate_sheen_albedo(column_mu(i), r, 64, 64);
+        for (int i = 0; i < kColumns; ++i)
+            t[j][i] = integrate_sheen_albedo(column_mu(i), r, 64, 64);
     });
     return t;
 }
@@ -97,7 +98,9 @@ float sheen_albedo(float mu, float r) {
     // Linear in mu between columns.
     const float mu0 = column_mu(i), mu1 = column_mu(i + 1);
     const float tc = std::clamp((mu - mu0) / (mu1 - mu0), 0.0f, 1.0f);
-    const auto lerp_row = [&](int row) { return table[row][i] * (1 - tc) + table[row][i + 1] * tc; };
+    const auto lerp_row = [&](int row) {
+        return table[row][i] * (1 - tc) + table[row][i + 1] * tc;
+    };
     return lerp_row(j) * (1 - tr) + lerp_row(j + 1) * tr;
 }
 

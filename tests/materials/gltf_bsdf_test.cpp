@@ -31,10 +31,10 @@ struct Stack {
 std::string describe(const Stack& s, Vec3 wo) {
     std::ostringstream o;
     o << "metallic " << s.metallic << ", roughness " << s.roughness << ", transmission "
-      << s.transmission << ", coat " << s.coat << " (roughness " << s.coat_roughness
-      << ", normal " << s.coat_normal.x << " " << s.coat_normal.y << " " << s.coat_normal.z
-      << "), sheen " << s.sheen.x << " " << s.sheen.y << " " << s.sheen.z << " (roughness "
-      << s.sheen_roughness << "), wo.z " << wo.z;
+      << s.transmission << ", coat " << s.coat << " (roughness " << s.coat_roughness << ", normal "
+      << s.coat_normal.x << " " << s.coat_normal.y << " " << s.coat_normal.z << "), sheen "
+      << s.sheen.x << " " << s.sheen.y << " " << s.sheen.z << " (roughness " << s.sheen_roughness
+      << "), wo.z " << wo.z;
     return o.str();
 }
 
@@ -285,9 +285,9 @@ TEST(GltfBsdf, ExtremesStayFiniteAndConserveEnergy) {
             const int n = 20000;
             double sum = 0, sum2 = 0;
             for (int i = 0; i < n; ++i) {
-                const auto r = bsdf.sample(wo, rng.next_float(),
-                                           {rng.next_float(), rng.next_float()},
-                                           Transport::Radiance);
+                const auto r =
+                    bsdf.sample(wo, rng.next_float(), {rng.next_float(), rng.next_float()},
+                                Transport::Radiance);
                 if (!r) continue;
                 ASSERT_TRUE(finite_nonneg(r->weight()) && r->pdf > 0) << describe(s, wo);
                 ASSERT_NEAR(length(r->wi), 1.0f, 1e-4f) << describe(s, wo);

@@ -53,7 +53,7 @@ GltfDiffuseTransmissionBsdf make(const Case& c, Spectrum base = {0.8f, 0.5f, 0.3
 
 TEST(GltfDiffuseTransmissionBsdf, SamplesFollowThePdf) {
     const Case cases[] = {
-        {0.5f, 0.0f, 1.0f, 0.0f},  {0.5f, 0.0f, 0.5f, 0.0f}, {1.0f, 0.4f, 0.3f, 0.0f},
+        {0.5f, 0.0f, 1.0f, 0.0f}, {0.5f, 0.0f, 0.5f, 0.0f}, {1.0f, 0.4f, 0.3f, 0.0f},
         {0.0f, 0.0f, 0.6f, 0.0f},  // smooth specular layer over the split base
         {0.3f, 0.2f, 0.5f, 0.5f},  // with KHR_materials_transmission
         {0.0f, 0.0f, 1.0f, 0.4f},
@@ -115,8 +115,7 @@ TEST(GltfDiffuseTransmissionBsdf, WhiteFurnaceIsExactForAnySplit) {
                 const Vec3 wo = spherical_direction(cos_o, 1.7f);
                 const test::AlbedoEstimate a =
                     test::directional_albedo(make(c, Spectrum(1), Spectrum(1)), wo, 20000, ++seed);
-                EXPECT_NEAR(a.mean.x, 1.0f, 4 * a.std_error.x + kTableTolerance)
-                    << describe(c, wo);
+                EXPECT_NEAR(a.mean.x, 1.0f, 4 * a.std_error.x + kTableTolerance) << describe(c, wo);
             }
     // Coloured: never a gain.
     for (float cos_o : {1.0f, 0.05f}) {

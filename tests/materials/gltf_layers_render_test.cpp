@@ -21,8 +21,7 @@ struct SphereStats {
     double mean = 0, se = 0;
 };
 
-Image render_sphere(const MaterialDesc& m, int res, int spp, Spectrum environment,
-                    bool sun) {
+Image render_sphere(const MaterialDesc& m, int res, int spp, Spectrum environment, bool sun) {
     Scene scene;
     scene.materials.push_back(m);
     const uint32_t sphere = test::add_sphere_object(scene, 0, 48, 96);
@@ -84,7 +83,8 @@ TEST(GltfLayersFurnace, WhiteDiffuseTransmissionVanishes) {
         MaterialDesc m = white_dielectric(0.5f);
         m.diffuse_transmission = factor;
         const SphereStats s = furnace(m, 64);
-        EXPECT_NEAR(s.mean, 1.0, 4 * s.se + 4 * kTableTolerance) << "dt " << factor << " +- " << s.se;
+        EXPECT_NEAR(s.mean, 1.0, 4 * s.se + 4 * kTableTolerance)
+            << "dt " << factor << " +- " << s.se;
         std::printf("diffuse transmission %.1f: furnace %.4f +- %.4f\n", factor, s.mean, s.se);
     }
 }

@@ -86,13 +86,13 @@ TEST(ShadeLayers, TexturesScaleTheLayers) {
     Scene scene;
     MaterialDesc m = dielectric();
     m.clearcoat = 0.8f;
-    m.clearcoat_texture.texture = add_texture(scene, {0.5f, 0, 0, 1});            // R
+    m.clearcoat_texture.texture = add_texture(scene, {0.5f, 0, 0, 1});  // R
     m.clearcoat_roughness = 0.6f;
     m.clearcoat_roughness_texture.texture = add_texture(scene, {0, 0.5f, 0, 1});  // G
     m.sheen_color = {1, 0.5f, 0.5f};
-    m.sheen_color_texture.texture = add_texture(scene, {0.5f, 1, 0.2f, 1});       // RGB
+    m.sheen_color_texture.texture = add_texture(scene, {0.5f, 1, 0.2f, 1});  // RGB
     m.sheen_roughness = 0.8f;
-    m.sheen_roughness_texture.texture = add_texture(scene, {0, 0, 0, 0.5f});      // A
+    m.sheen_roughness_texture.texture = add_texture(scene, {0, 0, 0, 0.5f});  // A
     m.diffuse_transmission = 0.6f;
     m.diffuse_transmission_texture.texture = add_texture(scene, {0, 0, 0, 0.5f});  // A
     m.diffuse_transmission_color = {1, 0.5f, 1};
@@ -118,7 +118,8 @@ TEST(ShadeLayers, TexturesScaleTheLayers) {
 std::optional<Vec3> coat_mirror(const ShadingData& sd, Vec3 wo_world) {
     const Vec3 wo = sd.frame.to_local(wo_world);
     for (int i = 0; i < 100; ++i) {
-        const auto s = sd.bsdf.get()->sample(wo, (i + 0.5f) / 100, {0.5f, 0.5f}, Transport::Radiance);
+        const auto s =
+            sd.bsdf.get()->sample(wo, (i + 0.5f) / 100, {0.5f, 0.5f}, Transport::Radiance);
         if (s && s->is_specular()) return sd.frame.to_world(s->wi);
     }
     return std::nullopt;
@@ -170,9 +171,8 @@ TEST(ShadeLayers, UnlitEmitsItsBaseColourAndReflectsNothing) {
     for (int i = 0; i < 100; ++i) {
         const Vec3 wo = test::random_direction(rng), wi = test::random_direction(rng);
         EXPECT_EQ(sd.bsdf.get()->eval(wo, wi, Transport::Radiance), Spectrum(0));
-        const auto s = sd.bsdf.get()->sample(wo, rng.next_float(),
-                                             {rng.next_float(), rng.next_float()},
-                                             Transport::Radiance);
+        const auto s = sd.bsdf.get()->sample(
+            wo, rng.next_float(), {rng.next_float(), rng.next_float()}, Transport::Radiance);
         if (s) {
             EXPECT_TRUE(is_black(s->weight()));
         }

@@ -38,8 +38,8 @@ TEST(SheenAlbedo, TableMatchesQuadrature) {
         // Grid corners and random points, grazing views included.
         const float mu = i < 6 ? std::array<float, 6>{1, 0.5f, 0.1f, 0.02f, 0.8f, 0.3f}[i]
                                : 0.01f + 0.99f * rng.next_float();
-        const float r = i < 6 ? std::array<float, 6>{1, 0.5f, 0.05f, 0.3f, 0.01f, 0.9f}[i]
-                              : rng.next_float();
+        const float r =
+            i < 6 ? std::array<float, 6>{1, 0.5f, 0.05f, 0.3f, 0.01f, 0.9f}[i] : rng.next_float();
         const double ref = reference_albedo(mu, r);
         const double table = sheen_albedo(mu, r);
         worst = std::max(worst, std::abs(table - ref));
@@ -66,7 +66,8 @@ TEST(CharlieSheen, IsSymmetricAndFinite) {
     Rng rng(6);
     for (int i = 0; i < 2000; ++i) {
         const CharlieSheen sheen(i % 10 == 0 ? 0.0f : rng.next_float());
-        const Vec3 wo = test::random_direction(rng, 0.001f), wi = test::random_direction(rng, 0.001f);
+        const Vec3 wo = test::random_direction(rng, 0.001f),
+                   wi = test::random_direction(rng, 0.001f);
         const float a = sheen.value(wo, wi), b = sheen.value(wi, wo);
         ASSERT_TRUE(std::isfinite(a));
         EXPECT_GE(a, 0.0f);
