@@ -34,7 +34,9 @@ private:
 
 // The lobe with its colour: f = color D V, sampled uniformly over the hemisphere (the
 // lobe is broad and does not vanish towards grazing wi, where a cosine warp would
-// starve it). Local shading frame, wo and wi away from the surface.
+// starve it: per sample, the albedo estimate's relative standard deviation is 0.2-1.4
+// this way against 0.5-3.2 cosine-weighted, over r 0.07-1 and cos_o 1-0.01). Local
+// shading frame, wo and wi away from the surface.
 class SheenLobe {
 public:
     SheenLobe(Spectrum color, float roughness) : m_color(color), m_sheen(roughness) {}
