@@ -25,6 +25,8 @@ namespace penumbra {
 // like the base's fresnel_mix, gains energy at grazing angles): reciprocal, and a lobe
 // with albedo a under a layer of albedo E reflects at most E(wo) + (1 - E(wo)) a <= 1.
 // The min() loses a little energy where E(wo) != E(wi) (Estevez & Kulla 2017, sec. 4).
+// --gltf-layering changes only the core's diffuse base (and the diffuse transmission
+// lobe under it); the coat and sheen are albedo-scaled in both.
 // In local shading coordinates (z = base shading normal); no cosine in eval.
 class GltfBsdf final : public Bsdf {
 public:
