@@ -26,8 +26,8 @@ Vec4 sample_texture(const Scene& scene, const TextureRef& ref, const SurfacePoin
 }
 
 // Tangent-space normal map (glTF: +X right/u, +Y up/v, Z out) to a world normal.
-Vec3 apply_normal_map(const Scene& scene, const MaterialDesc& m, const SurfacePoint& sp,
-                      Vec3 ns) {
+Vec3 apply_normal_map(const Scene& scene, const TextureRef& map, float scale,
+                      const SurfacePoint& sp, Vec3 ns) {
     Vec3 t;
     float sign = 1;
     if (sp.tangent.w != 0) {
@@ -42,12 +42,24 @@ Vec3 apply_normal_map(const Scene& scene, const MaterialDesc& m, const SurfacePo
     // glTF's bitangent is cross(normal, tangent) * w. Generated frames from dp/du
     // follow the v direction of the image, which points down in glTF UVs.
     const Vec3 b = cross(ns, t) * sign;
-    const Vec4 texel = sample_texture(scene, m.normal_texture, sp);
-    const Vec3 local(( texel.x * 2 - 1) * m.normal_scale, (texel.y * 2 - 1) * m.normal_scale,
-                     texel.z * 2 - 1);
+    const Vec4 texel = sample_texture(scene, map, sp);
+    const Vec3 local((texel.x * 2 - 1) * scale, (texel.y * 2 - 1) * scale, texel.z * 2 - 1);
     const Vec3 n = t * local.x + b * local.y + ns * local.z;
     const float len = length(n);
     return len > 0 && std::isfinite(len) ? n / len : ns;
+}
+
+// A mapped normal that leans past the geometric horizon would shade the wrong side;
+// keep the interpolated one there.
+Vec3 mapped_normal(const Scene& scene, const TextureRef& map, float scale,
+                   const SurfacePoint& sp) {
+    if (!map.valid()) return sp.ns;
+    const Vec3 mapped = apply_normal_map(scene, map, scale, sp, sp.ns);
+    return dot(mapped, sp.ng) > 0 ? mapped : sp.ns;
+}
+
+Spectrum clamp01(Spectrum s) {
+    return {std::clamp(s.x, 0.0f, 1.0f), std::clamp(s.y, 0.0f, 1.0f), std::clamp(s.z, 0.0f, 1.0f)};
 }
 
 float opacity_from_alpha(const MaterialDesc& m, float alpha) {
@@ -81,13 +93,7 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     ShadingData sd;
 
     // Shade the side the viewer is on (glTF surfaces are thin sheets to the rays).
-    Vec3 ns = sp.ns;
-    if (m.normal_texture.valid()) {
-        const Vec3 mapped = apply_normal_map(scene, m, sp, ns);
-        // A mapped normal that leans past the geometric horizon would shade the wrong
-        // side; keep the interpolated one there.
-        if (dot(mapped, sp.ng) > 0) ns = mapped;
-    }
+    Vec3 ns = mapped_normal(scene, m.normal_texture, m.normal_scale, sp);
     sd.front_face = dot(wo, sp.ng) >= 0;
     const float side = sd.front_face ? 1.0f : -1.0f;
     const Vec3 ng = sp.ng * side;
@@ -100,8 +106,29 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     sd.base_color = base.xyz();
     sd.opacity = opacity_from_alpha(m, base.w);
 
+    if (m.unlit) {
+        // KHR_materials_unlit: the base colour (factor x texture x vertex colour) as
+        // emitted radiance, and nothing reflected (see shade() in material.h).
+        sd.emission = sd.base_color;
+        sd.bsdf.emplace(LambertianBsdf(Spectrum(0)));
+        return sd;
+    }
+
     float metallic = m.metallic, roughness = m.roughness;
-    if (m.metallic_roughness_texture.valid()) {
+    Spectrum specular_color = m.specular_color;
+    float specular = m.specular;
+    if (m.specular_glossiness) {
+        // KHR_materials_pbrSpecularGlossiness: the diffuse colour is the base (above), f0
+        // the specular colour, f90 1, roughness 1 - glossiness; no metal.
+        metallic = 0;
+        float glossiness = 1 - m.roughness;
+        if (m.specular_glossiness_texture.valid()) {
+            const Vec4 sg = sample_texture(scene, m.specular_glossiness_texture, sp);
+            specular_color = specular_color * sg.xyz();
+            glossiness *= sg.w;
+        }
+        roughness = 1 - glossiness;
+    } else if (m.metallic_roughness_texture.valid()) {
         const Vec4 mr = sample_texture(scene, m.metallic_roughness_texture, sp);
         roughness *= mr.y;
         metallic *= mr.z;
@@ -116,8 +143,30 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
         transmission *= sample_texture(scene, m.transmission_texture, sp).x;
     transmission = std::clamp(transmission, 0.0f, 1.0f);
 
-    const float specular = std::clamp(m.specular, 0.0f, 1.0f);
-    if (metallic == 0 && specular == 0 && transmission == 0) {
+    // KHR_materials_specular's textures: A scales the factor, RGB the colour.
+    if (m.specular_texture.valid()) specular *= sample_texture(scene, m.specular_texture, sp).w;
+    if (m.specular_color_texture.valid())
+        specular_color = specular_color * sample_texture(scene, m.specular_color_texture, sp).xyz();
+    specular = std::clamp(specular, 0.0f, 1.0f);
+
+    // The layers, each only where it is active.
+    float coat = m.clearcoat;
+    if (coat > 0 && m.clearcoat_texture.valid())
+        coat *= sample_texture(scene, m.clearcoat_texture, sp).x;
+    coat = std::clamp(coat, 0.0f, 1.0f);
+    Spectrum sheen_color = m.sheen_color;
+    if (max_component(sheen_color) > 0 && m.sheen_color_texture.valid())
+        sheen_color = sheen_color * sample_texture(scene, m.sheen_color_texture, sp).xyz();
+    sheen_color = clamp01(sheen_color);
+    DiffuseTransmissionParams dt;
+    dt.factor = m.diffuse_transmission;
+    if (dt.factor > 0 && m.diffuse_transmission_texture.valid())
+        dt.factor *= sample_texture(scene, m.diffuse_transmission_texture, sp).w;
+    dt.factor = std::clamp(dt.factor, 0.0f, 1.0f);
+    if (metallic == 1) dt.factor = 0;  // a metal has no diffuse base to split
+    const bool layered = coat > 0 || max_component(sheen_color) > 0 || dt.factor > 0;
+
+    if (!layered && metallic == 0 && specular == 0 && transmission == 0) {
         // KHR_materials_specular with factor 0 and no metal: exactly Lambertian.
         sd.bsdf.emplace(LambertianBsdf(sd.base_color));
         return sd;
@@ -126,15 +175,16 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     p.base_color = sd.base_color;
     p.metallic = metallic;
     p.alpha = roughness * roughness;
-    const Spectrum f0 = m.specular_color * f0_from_ior(m.ior);
-    p.dielectric_f0 = min(f0, Spectrum(1)) * specular;
-    p.dielectric_f90 = specular;
+    if (m.specular_glossiness) {
+        p.dielectric_f0 = clamp01(specular_color);
+        p.dielectric_f90 = 1;
+    } else {
+        const Spectrum f0 = specular_color * f0_from_ior(m.ior);
+        p.dielectric_f0 = min(f0, Spectrum(1)) * specular;
+        p.dielectric_f90 = specular;
+    }
     p.distribution = options.gltf_distribution;
     p.layering = options.gltf_layering;
-    if (transmission == 0 || metallic == 1) {
-        sd.bsdf.emplace(MetalRoughBsdf(p));
-        return sd;
-    }
     // KHR_materials_transmission: a rough dielectric with the material's IOR (exact
     // Fresnel instead of Schlick) whose refracted light takes the base colour; the
     // specular extension scales its reflection as it scales glTF's f0 and f90. The
@@ -144,9 +194,52 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     d.eta = sd.front_face ? ior : 1 / ior;
     d.alpha = p.alpha;
     d.distribution = options.gltf_distribution;
-    d.reflectance = min(m.specular_color, Spectrum(1)) * specular;
+    d.reflectance = min(specular_color, Spectrum(1)) * specular;
     d.transmittance = sd.base_color;
-    sd.bsdf.emplace(GltfTransmissionBsdf(p, transmission, d));
+    const bool opaque = transmission == 0 || metallic == 1;
+    if (!layered) {
+        if (opaque) {
+            sd.bsdf.emplace(MetalRoughBsdf(p));
+        } else {
+            sd.bsdf.emplace(GltfTransmissionBsdf(p, transmission, d));
+        }
+        return sd;
+    }
+
+    // KHR_materials_diffuse_transmission splits the diffuse base (factor texture A,
+    // colour texture RGB).
+    dt.color = m.diffuse_transmission_color;
+    if (dt.factor > 0 && m.diffuse_transmission_color_texture.valid())
+        dt.color = dt.color * sample_texture(scene, m.diffuse_transmission_color_texture, sp).xyz();
+    dt.color = clamp01(dt.color);
+    const GltfBsdf::Core core =
+        dt.factor > 0 ? GltfBsdf::Core(GltfDiffuseTransmissionBsdf(p, dt, transmission, d))
+        : opaque      ? GltfBsdf::Core(MetalRoughBsdf(p))
+                      : GltfBsdf::Core(GltfTransmissionBsdf(p, transmission, d));
+
+    std::optional<SheenLobe> sheen;
+    if (max_component(sheen_color) > 0) {
+        float sheen_roughness = m.sheen_roughness;
+        if (m.sheen_roughness_texture.valid())
+            sheen_roughness *= sample_texture(scene, m.sheen_roughness_texture, sp).w;
+        sheen = SheenLobe(sheen_color, std::clamp(sheen_roughness, 0.0f, 1.0f));
+    }
+    std::optional<ClearcoatLobe> clearcoat;
+    if (coat > 0) {
+        float coat_roughness = m.clearcoat_roughness;
+        if (m.clearcoat_roughness_texture.valid())
+            coat_roughness *= sample_texture(scene, m.clearcoat_roughness_texture, sp).y;
+        coat_roughness = std::clamp(coat_roughness, 0.0f, 1.0f);
+        // The coat has its own normal map; without one it follows the interpolated
+        // normal, not the base's normal map (the clearcoat spec's clearcoatNormalTexture).
+        Vec3 nc = sd.frame.to_local(
+            mapped_normal(scene, m.clearcoat_normal_texture, m.clearcoat_normal_scale, sp) *
+            side);
+        if (!(nc.z > 1e-4f)) nc = Vec3(0, 0, 1);  // behind the base normal: no separate frame
+        clearcoat = ClearcoatLobe(coat, coat_roughness * coat_roughness, normalize(nc),
+                                  options.gltf_distribution);
+    }
+    sd.bsdf.emplace(GltfBsdf(core, sheen, clearcoat));
     return sd;
 }
 

@@ -10,6 +10,7 @@
 #include "materials/conductor.h"
 #include "materials/cook_torrance.h"
 #include "materials/dielectric.h"
+#include "materials/gltf_bsdf.h"
 #include "materials/gltf_transmission_bsdf.h"
 #include "materials/lambertian.h"
 #include "materials/metal_rough_bsdf.h"
@@ -26,7 +27,7 @@ public:
 
 private:
     std::variant<std::monostate, LambertianBsdf, OrenNayarBsdf, MetalRoughBsdf,
-                 GltfTransmissionBsdf, DielectricBsdf, ConductorBsdf, CookTorranceBsdf>
+                 GltfTransmissionBsdf, DielectricBsdf, ConductorBsdf, CookTorranceBsdf, GltfBsdf>
         m_v;
 };
 
@@ -51,7 +52,13 @@ struct MaterialOptions {
     GltfLayering gltf_layering = GltfLayering::AlbedoScaled;
 };
 
-// wo: unit world direction towards the viewer (-ray.d).
+// wo: unit world direction towards the viewer (-ray.d). Materials with a clearcoat,
+// sheen or diffuse transmission become a GltfBsdf; the rest keep the plain models.
+// KHR_materials_unlit: the base colour is emitted and the BSDF is black, so paths end
+// there; such surfaces are not light-sampled (MaterialDesc::is_emissive is false), yet
+// light every path that reaches them, unlike Blender's importer, which makes unlit
+// materials visible to camera rays only (emission mixed with transparency by the
+// "Is Camera Ray" light path output).
 ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
                   const MaterialOptions& options = {});
 
