@@ -4,7 +4,9 @@
 #include <cmath>
 #include <type_traits>
 
+#include "core/media/medium_set.h"
 #include "core/scene/emission.h"
+#include "materials/dispersion.h"
 #include "materials/fresnel.h"
 
 namespace penumbra {
@@ -76,7 +78,7 @@ bool scene_has_alpha(const Scene& scene) {
 }
 
 ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
-                  const MaterialOptions& options) {
+                  const MaterialOptions& options, int dispersion_channel) {
     const MaterialDesc& m = scene.material(sp.material);
     ShadingData sd;
 
@@ -139,14 +141,18 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     // Fresnel instead of Schlick) whose refracted light takes the base colour; the
     // specular extension scales its reflection as it scales glTF's f0 and f90. The
     // frame faces wo, so the far side has IOR ior when wo is outside, 1/ior inside.
+    // Without KHR_materials_volume the surface is a thin sheet with IOR 1 on both sides;
+    // dispersion (which needs a volume) refracts at the path's channel's IOR.
     DielectricParams d;
-    const float ior = m.ior > 0 ? m.ior : 1.5f;
-    d.eta = sd.front_face ? ior : 1 / ior;
+    const bool volume = material_has_volume(m);
+    const float ior = dispersion_ior(m.ior > 0 ? m.ior : 1.5f, volume ? m.dispersion : 0,
+                                     dispersion_channel);
+    d.eta = sd.front_face || !volume ? ior : 1 / ior;
     d.alpha = p.alpha;
     d.distribution = options.gltf_distribution;
     d.reflectance = min(m.specular_color, Spectrum(1)) * specular;
     d.transmittance = sd.base_color;
-    sd.bsdf.emplace(GltfTransmissionBsdf(p, transmission, d));
+    sd.bsdf.emplace(GltfTransmissionBsdf(p, transmission, d, !volume));
     return sd;
 }
 

@@ -51,9 +51,11 @@ struct MaterialOptions {
     GltfLayering gltf_layering = GltfLayering::AlbedoScaled;
 };
 
-// wo: unit world direction towards the viewer (-ray.d).
+// wo: unit world direction towards the viewer (-ray.d). dispersion_channel: the RGB
+// channel (0-2) whose IOR a dispersive volume refracts at (materials/dispersion.h), -1
+// for the material's own IOR.
 ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
-                  const MaterialOptions& options = {});
+                  const MaterialOptions& options = {}, int dispersion_channel = -1);
 
 // Coverage of the surface at sp from glTF's alphaMode: OPAQUE is 1, MASK is 0 or 1 by
 // alphaCutoff, BLEND is the alpha itself (rendered as stochastic transparency).
