@@ -30,8 +30,10 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         }
         const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
         const Vec3 wo_world = normalize(-ray.d);
-        const int channel = dispersion_channel(ctx, media, sp.material, sampler, beta);
-        const ShadingData sd = shade(ctx.scene, sp, wo_world, ctx.materials, channel);
+        dispersion_channel(ctx, media, sp.material, sampler, beta);
+        const bool front = dot(wo_world, sp.ng) >= 0;  // as shade() decides it
+        const ShadingData sd = shade(ctx.scene, sp, wo_world, ctx.materials,
+                                     path_volume(ctx, media, sp.material, front));
         if (pass_through(sp, sd, sampler, ray)) {
             if (++passes > 256) break;  // a stack of holes ends the path
             continue;

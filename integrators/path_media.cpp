@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "materials/dispersion.h"
+
 namespace penumbra {
 
 Spectrum segment_transmittance(const RenderContext& ctx, const MediumStack& stack, const Ray& ray,
@@ -26,6 +28,31 @@ SideMedia side_media(const RenderContext& ctx, const MediumStack& stack, int mat
     MediumStack beyond = stack;
     cross_surface(ctx, beyond, material, front_face);
     return {ctx.media.interior(stack.current()), ctx.media.interior(beyond.current())};
+}
+
+namespace {
+
+// The IOR of the medium inside `material` (1 outside all volumes) at the path's channel.
+float medium_ior(const RenderContext& ctx, int material, int channel) {
+    if (material < 0) return 1;
+    const MaterialDesc& m = ctx.scene.material(material);
+    return dispersion_ior(m.ior > 0 ? m.ior : 1.5f, m.dispersion, channel);
+}
+
+}  // namespace
+
+PathVolume path_volume(const RenderContext& ctx, const PathMedia& media, int material,
+                       bool front_face) {
+    PathVolume v;
+    v.dispersion_channel = media.channel;
+    if (!ctx.media.has_volume(material)) return v;
+    if (!front_face && !media.stack.contains(material)) return v;
+    MediumStack beyond = media.stack;
+    cross_surface(ctx, beyond, material, front_face);
+    // Outside all volumes the ratios are ior / 1 and 1 / ior, as shade() forms them.
+    v.eta = medium_ior(ctx, beyond.current(), media.channel) /
+            medium_ior(ctx, media.stack.current(), media.channel);
+    return v;
 }
 
 int dispersion_channel(const RenderContext& ctx, PathMedia& media, int material, Sampler& sampler,

@@ -37,6 +37,16 @@ void cross_surface(const RenderContext& ctx, MediumStack& stack, int material, b
 SideMedia side_media(const RenderContext& ctx, const MediumStack& stack, int material,
                      bool front_face);
 
+// What shade() needs from the path at a hit of `material` seen from its front or back:
+// the dispersion channel, and for a volume boundary the relative IOR, that of the medium
+// beyond (the stack after crossing) over that of the medium the path is in, each at the
+// channel's wavelength and 1 outside all volumes. At a boundary inside the region the
+// stack already assigns to the same medium (an inner face of overlapping volumes) the
+// ratio is 1: no interface. Leaving a volume the path is not in (flipped winding, a
+// camera inside) falls back to the material against IOR 1.
+PathVolume path_volume(const RenderContext& ctx, const PathMedia& media, int material,
+                       bool front_face);
+
 // At a hit of `material`: when it is the path's first dispersive volume that transmits,
 // picks one RGB channel uniformly with one sampler dimension, keeps beta on that channel
 // only, times 3 (an unbiased one-sample estimate of the three), and returns it for

@@ -78,7 +78,7 @@ bool scene_has_alpha(const Scene& scene) {
 }
 
 ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
-                  const MaterialOptions& options, int dispersion_channel) {
+                  const MaterialOptions& options, const PathVolume& path) {
     const MaterialDesc& m = scene.material(sp.material);
     ShadingData sd;
 
@@ -142,12 +142,13 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     // specular extension scales its reflection as it scales glTF's f0 and f90. The
     // frame faces wo, so the far side has IOR ior when wo is outside, 1/ior inside.
     // Without KHR_materials_volume the surface is a thin sheet with IOR 1 on both sides;
-    // dispersion (which needs a volume) refracts at the path's channel's IOR.
+    // dispersion (which needs a volume) refracts at the path's channel's IOR, and the
+    // path's media give the IOR ratio at nested volumes.
     DielectricParams d;
     const bool volume = material_has_volume(m);
     const float ior = dispersion_ior(m.ior > 0 ? m.ior : 1.5f, volume ? m.dispersion : 0,
-                                     dispersion_channel);
-    d.eta = sd.front_face || !volume ? ior : 1 / ior;
+                                     path.dispersion_channel);
+    d.eta = volume && path.eta > 0 ? path.eta : sd.front_face || !volume ? ior : 1 / ior;
     d.alpha = p.alpha;
     d.distribution = options.gltf_distribution;
     d.reflectance = min(m.specular_color, Spectrum(1)) * specular;

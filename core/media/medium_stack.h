@@ -32,6 +32,11 @@ public:
                 return;
             }
     }
+    bool contains(int material) const {
+        for (int i = 0; i < m_size; ++i)
+            if (m_materials[i] == material) return true;
+        return false;
+    }
     // The material entered just outside the innermost one: the medium beyond the surface
     // of the innermost volume; -1 when that is the outside of everything.
     int enclosing() const { return m_size > 1 ? m_materials[m_size - 2] : -1; }

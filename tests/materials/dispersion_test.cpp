@@ -50,7 +50,7 @@ TEST(Dispersion, EachChannelRefractsBySnellAtItsIor) {
     const Vec3 wo_world = normalize(Vec3(0.8f, 0.0f, 0.6f));
     float sin_t[3];
     for (int c = 0; c < 3; ++c) {
-        const ShadingData sd = shade(scene, sp, wo_world, {}, c);
+        const ShadingData sd = shade(scene, sp, wo_world, {}, PathVolume{c, 0});
         const Vec3 wo = sd.frame.to_local(wo_world);
         const float eta = dispersion_ior(1.6f, 1.5f, c);
         const auto s = sd.bsdf.get()->sample(wo, 0.999f, {0.5f, 0.5f}, Transport::Radiance);
@@ -66,8 +66,8 @@ TEST(Dispersion, EachChannelRefractsBySnellAtItsIor) {
     // Thin-walled (no volume): dispersion has no effect (it needs a volume).
     m.thickness = 0;
     scene.materials[0] = m;
-    const ShadingData a = shade(scene, sp, wo_world, {}, 0);
-    const ShadingData b = shade(scene, sp, wo_world, {}, -1);
+    const ShadingData a = shade(scene, sp, wo_world, {}, PathVolume{0, 0});
+    const ShadingData b = shade(scene, sp, wo_world, {});
     const Vec3 wo = a.frame.to_local(wo_world);
     EXPECT_EQ(a.bsdf.get()->sample(wo, 0.01f, {0.5f, 0.5f}, Transport::Radiance)->weight(),
               b.bsdf.get()->sample(wo, 0.01f, {0.5f, 0.5f}, Transport::Radiance)->weight());
