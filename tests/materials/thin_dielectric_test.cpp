@@ -1,7 +1,7 @@
 // Thin-walled dielectric sheets. Smooth: straight-through transmission (wi = -wo), the
 // inter-reflection sum R' = 2R / (1 + R), R' + T' = 1. Rough: sampling against the pdf
-// over the whole sphere from both sides, eval/pdf agreement, reciprocity of reflection
-// and transmission, and the furnace: reflection plus transmission is exactly the white
+// over the whole sphere from both sides and, folded, by half vector down to alpha 1e-3;
+// eval/pdf agreement, reciprocity of reflection and transmission, and the furnace: reflection plus transmission is exactly the white
 // mirror lobe (Cook-Torrance with F = 1), sample by sample.
 #include "materials/thin_dielectric.h"
 
@@ -101,6 +101,52 @@ TEST(ThinDielectricBsdf, RoughSamplesFollowThePdf) {
                 const double lost = double(r.lost) / r.samples;
                 EXPECT_NEAR(r.pdf_integral, 1 - lost, 5 * std::sqrt(lost / r.samples) + 2e-4)
                     << describe(p, wo);
+            }
+}
+
+// The sheet with transmitted directions folded back through the surface plane: its two
+// lobes then share one microfacet normal per direction, so the half-vector chi-square
+// (reflection only) can bin lobes too narrow for the sphere.
+class FoldedSheet final : public Bsdf {
+public:
+    explicit FoldedSheet(const ThinDielectricBsdf& sheet) : m_sheet(sheet) {}
+    Spectrum eval(Vec3 wo, Vec3 wi, Transport mode) const override {
+        return m_sheet.eval(wo, wi, mode) + m_sheet.eval(wo, {wi.x, wi.y, -wi.z}, mode);
+    }
+    float pdf(Vec3 wo, Vec3 wi, Transport mode) const override {
+        return m_sheet.pdf(wo, wi, mode) + m_sheet.pdf(wo, {wi.x, wi.y, -wi.z}, mode);
+    }
+    std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Vec2 u, Transport mode) const override {
+        std::optional<BsdfSample> s = m_sheet.sample(wo, u_lobe, u, mode);
+        if (!s || s->wi.z * wo.z > 0) return s;
+        s->wi.z = -s->wi.z;
+        s->f = eval(wo, s->wi, mode);
+        s->pdf = pdf(wo, s->wi, mode);
+        return s;
+    }
+    bool has_specular() const override { return false; }
+
+private:
+    const ThinDielectricBsdf& m_sheet;
+};
+
+TEST(ThinDielectricBsdf, NarrowLobesFollowTheirPdf) {
+    const float alphas[] = {1e-3f, 1e-2f};
+    const float cos_os[] = {0.9f, 0.2f, 0.02f};
+    test::BsdfChi2Options o;
+    o.samples = 100000;
+    o.significance = test::sidak_significance(0.01, 2 * std::size(alphas) * std::size(cos_os));
+    int seed = 950;
+    for (MicrofacetType type : {MicrofacetType::Ggx, MicrofacetType::Beckmann})
+        for (float alpha : alphas)
+            for (float cos_o : cos_os) {
+                const DielectricParams p = params(1.5f, alpha, type);
+                const ThinDielectricBsdf sheet(p);
+                const FoldedSheet folded(sheet);
+                const Vec3 wo = spherical_direction(cos_o, 0.9f);
+                o.seed = ++seed;
+                const test::Chi2Result r = test::bsdf_chi2_half_vector(folded, wo, alpha, 0, o);
+                EXPECT_TRUE(r.passed) << describe(p, wo) << "\n" << r.report;
             }
 }
 
