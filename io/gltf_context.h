@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/lights/light_units.h"
 #include "core/math/mat3.h"
 #include "core/scene/scene.h"
 
@@ -18,6 +19,8 @@ struct GltfContext {
     const tinygltf::Model& model;
     std::string file;  // as the caller named it; prefixes every message
     Mat3 rec709_to_working = Mat3::identity();  // for light colours (scene_color.h)
+    LightUnits light_units = LightUnits::Photometric;  // KHR_lights_punctual intensities
+    int variant = -1;  // KHR_materials_variants index chosen; -1: default materials
 
     // Throws SceneError "<file>: <element>: <problem>".
     [[noreturn]] void fail(const std::string& element, const std::string& problem) const {

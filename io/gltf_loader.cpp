@@ -14,6 +14,7 @@
 #include "io/gltf_animation.h"
 #include "io/gltf_context.h"
 #include "io/gltf_node_motion.h"
+#include "io/gltf_variants.h"
 #include "io/scene_color.h"
 
 namespace penumbra {
@@ -22,9 +23,26 @@ namespace {
 
 // Extensions whose meaning we implement.
 const char* const kSupportedExtensions[] = {
-    "KHR_lights_punctual",    "KHR_materials_emissive_strength", "KHR_materials_ior",
-    "KHR_materials_specular", "KHR_materials_transmission",      "KHR_mesh_quantization",
-    "KHR_texture_transform",  "EXT_cameras_sensor",              "EXT_mesh_gpu_instancing"};
+    "KHR_lights_punctual",
+    "KHR_materials_anisotropy",
+    "KHR_materials_clearcoat",
+    "KHR_materials_diffuse_transmission",
+    "KHR_materials_dispersion",
+    "KHR_materials_emissive_strength",
+    "KHR_materials_ior",
+    "KHR_materials_iridescence",
+    "KHR_materials_pbrSpecularGlossiness",
+    "KHR_materials_sheen",
+    "KHR_materials_specular",
+    "KHR_materials_transmission",
+    "KHR_materials_unlit",
+    "KHR_materials_variants",
+    "KHR_materials_volume",
+    "KHR_mesh_quantization",
+    "KHR_texture_transform",
+    "EXT_cameras_sensor",
+    "EXT_mesh_gpu_instancing",
+    "EXT_texture_webp"};
 
 bool is_supported(const std::string& name) {
     for (const char* s : kSupportedExtensions)
@@ -135,6 +153,14 @@ tinygltf::Model parse(const std::string& path) {
         throw SceneError(path + ": " + one_line(e.what()));
     }
     log_lines(path, warn);
+    // tinygltf reads extensionsRequired before buffers and accessors, which a compression
+    // extension (Draco, meshopt) leaves without data; name the extension, not the
+    // accessor it broke.
+    if (!ok)
+        for (const std::string& name : model.extensionsRequired)
+            if (!is_supported(name))
+                throw SceneError(path + ": extensionsRequired: unsupported extension '" + name +
+                                 "'");
     if (!ok) throw SceneError(path + ": " + (err.empty() ? "cannot parse glTF" : one_line(err)));
     log_lines(path, err);  // tinygltf reports some recoverable problems as errors
     return model;
@@ -158,8 +184,9 @@ GltfAnimations load_gltf_animations(const std::string& path) {
 
 Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
     const tinygltf::Model model = parse(path);
-    const GltfContext ctx{model, path, options.rec709_to_working};
+    GltfContext ctx{model, path, options.rec709_to_working, options.light_units};
     check_asset_and_extensions(ctx);
+    ctx.variant = find_variant(ctx, options.variant);
 
     const Shutter shutter{options.shutter_open, options.shutter_close};
     if (!std::isfinite(shutter.open) || !std::isfinite(shutter.close) ||

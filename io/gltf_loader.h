@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "core/lights/light_units.h"
 #include "core/math/mat3.h"
 #include "core/scene/scene.h"
 
@@ -20,6 +21,11 @@ struct GltfLoadOptions {
     // Equal values are a still at that time; both 0 (the default) is the file's pose at
     // time 0, which for a file without animations is its nodes' own transforms.
     double shutter_open = 0, shutter_close = 0;
+    // KHR_materials_variants: the variant whose materials primitives use where they map
+    // one; empty: every primitive's default material. An unknown name is a SceneError.
+    std::string variant = "";
+    // KHR_lights_punctual intensities: photometric (cd, lux; the spec's) or radiometric.
+    LightUnits light_units = LightUnits::Photometric;
 };
 
 // Loads the file at path; throws SceneError for bad input, including a shutter that

@@ -5,6 +5,7 @@
 
 #include "io/gltf_accessor.h"
 #include "io/gltf_context.h"
+#include "io/gltf_variants.h"
 
 namespace penumbra {
 
@@ -161,7 +162,7 @@ bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, co
     }
     if (prim.material >= 0 || prim.material < -1)
         ctx.check_index(el, "material", prim.material, ctx.model.materials.size(), "materials");
-    mesh.material = prim.material;
+    mesh.material = primitive_material(ctx, prim, el);
 
     const PrimitiveReader reader(ctx, prim, el);
     if (!prim.attributes.count("POSITION")) ctx.fail(el, "has no POSITION attribute");

@@ -161,7 +161,8 @@ int node_light(const GltfContext& ctx, const std::string& el, const tinygltf::No
 }
 
 // KHR_lights_punctual: intensity in candela (point, spot) or lux (directional), times
-// colour. `range` is ignored: we keep the physical inverse-square falloff everywhere.
+// colour, to W/sr or W/m^2 as ctx.light_units says (core/lights/light_units.h). `range`
+// is ignored: we keep the physical inverse-square falloff everywhere.
 std::unique_ptr<Light> make_light(const GltfContext& ctx, const LightNode& ln, float scene_radius) {
     const tinygltf::Light& gl = ctx.model.lights[size_t(ln.light)];
     const std::string el = "extensions.KHR_lights_punctual." + element("lights", size_t(ln.light));
@@ -172,7 +173,8 @@ std::unique_ptr<Light> make_light(const GltfContext& ctx, const LightNode& ln, f
     }
     if (!(gl.intensity >= 0) || !std::isfinite(gl.intensity))
         ctx.fail(el, "intensity must be a finite number >= 0");
-    const Spectrum I = ctx.rec709_to_working * color * float(gl.intensity);
+    const Spectrum I =
+        ctx.rec709_to_working * color * float(gl.intensity * radiometric_scale(ctx.light_units));
     const Vec3 position = ln.to_world.point(Vec3(0, 0, 0));
     const Vec3 axis = ln.to_world.vector(Vec3(0, 0, -1));
     if (gl.type == "point") return std::make_unique<PointLight>(position, I);

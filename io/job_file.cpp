@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
 #include <stdexcept>
 
@@ -25,11 +26,12 @@ public:
 
     void read(JobSettings& s) const {
         static const char* const kKeys[] = {
-            "scene",  "camera", "integrator", "strategy", "sampler", "filter",  "accel",
+            "scene",  "camera", "variant", "integrator", "strategy", "sampler", "filter",  "accel",
             "output", "out_dir", "name",      "frames",   "width",   "height",  "max_depth",
             "frame",  "spp",    "seed",       "time",     "time_limit", "fps",
             "shutter", "shutter_open", "shutter_close", "ocio_config", "working_space",
-            "output_colorspace", "display", "view", "look", "aov", "half", "compression"};
+            "output_colorspace", "display", "view", "look", "aov", "half", "compression",
+            "light_units", "default_light", "exposure"};
         for (const auto& [key, value] : m_object.items()) {
             bool known = false;
             for (const char* k : kKeys) known = known || key == k;
@@ -40,6 +42,7 @@ public:
             }
         }
         text("camera", s.camera);
+        text("variant", s.variant);
         text("integrator", s.integrator);
         text("strategy", s.strategy);
         text("sampler", s.sampler);
@@ -90,6 +93,11 @@ public:
             if (!m_object["half"].is_boolean()) fail("half", "expected true or false");
             s.half = m_object["half"].get<bool>();
         }
+        choice("light_units", s.light_units, {"photometric", "radiometric"});
+        choice("default_light", s.default_light, {"auto", "on", "off"});
+        number("exposure", s.exposure, false);
+        if (s.exposure && std::abs(*s.exposure) > 64)
+            fail("exposure", "expected stops in [-64, 64]");
     }
 
     [[noreturn]] void fail(const std::string& key, const std::string& what) const {
@@ -103,6 +111,17 @@ private:
         if (!v.is_string() || v.get<std::string>().empty())
             fail(key, "expected a non-empty string");
         out = v.get<std::string>();
+    }
+    void choice(const char* key, std::optional<std::string>& out,
+                std::initializer_list<const char*> allowed) const {
+        text(key, out);
+        if (!out) return;
+        std::string list;
+        for (const char* a : allowed) {
+            if (*out == a) return;
+            list += (list.empty() ? "" : ", ") + std::string(a);
+        }
+        fail(key, "'" + *out + "' is not one of: " + list);
     }
     void path(const char* key, std::optional<std::string>& out) const {
         text(key, out);

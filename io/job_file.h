@@ -13,7 +13,7 @@ namespace penumbra {
 // Settings a job file may give, globally ("defaults") or per entry. Unset: inherit.
 // Relative paths (scene, output, out_dir) are resolved against the job file's folder.
 struct JobSettings {
-    std::optional<std::string> camera, integrator, strategy, sampler, filter, accel;
+    std::optional<std::string> camera, variant, integrator, strategy, sampler, filter, accel;
     std::optional<std::string> output, out_dir, name, frames;
     std::optional<int> width, height, max_depth, frame;
     std::optional<uint32_t> spp;
@@ -26,6 +26,9 @@ struct JobSettings {
     std::optional<std::string> ocio_config, working_space, output_colorspace, display, view,
         look, aov, compression;
     std::optional<bool> half;
+    // Light: as --light-units, --default-light and --exposure (stops).
+    std::optional<std::string> light_units, default_light;
+    std::optional<double> exposure;
 };
 
 struct JobEntry {

@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <cmath>
 #include <memory>
 
 #include "core/camera/camera_matrices.h"
@@ -36,13 +37,15 @@ const std::vector<AovLayout>& aov_layouts() {
 
 }  // namespace
 
-AovLayers aov_layers(const Film& film, const ColorPipeline& color) {
+AovLayers aov_layers(const Film& film, const ColorPipeline& color, float radiance_scale) {
     AovLayers out;
     out.images.reserve(aov_layouts().size());  // layers point into images
     for (const AovLayout& l : aov_layouts()) {
         if (!film.aovs().has(l.aov)) continue;
         out.images.push_back(film.resolve_aov(l.aov));
         if (l.colour) color.to_output(out.images.back());
+        if (l.aov == Aov::Variance && radiance_scale != 1)
+            for (float& v : out.images.back().pixels) v *= radiance_scale * radiance_scale;
         out.layers.push_back({l.layer, l.channels, &out.images.back(), l.full_float});
     }
     return out;
@@ -95,7 +98,13 @@ Image read_beauty(const std::string& path) {
 RenderFilesResult write_render(const RenderFiles& files, const Film& film,
                                const ColorPipeline& color, const CameraDesc& camera,
                                Metadata metadata) {
-    const Image working = film.resolve();
+    // The exposure scales colour, not alpha.
+    const float scale = std::exp2(files.exposure);
+    Image working = film.resolve();
+    if (scale != 1)
+        for (size_t i = 0; i < working.pixels.size(); ++i)
+            if (working.channels < 4 || i % size_t(working.channels) != 3)
+                working.pixels[i] *= scale;
     Image beauty = working;
     color.to_output(beauty);
 
@@ -117,11 +126,11 @@ RenderFilesResult write_render(const RenderFiles& files, const Film& film,
     for (auto& entry : camera_metadata(camera, beauty.width, beauty.height))
         metadata.push_back(std::move(entry));
 
-    const AovLayers aovs = aov_layers(film, color);
+    const AovLayers aovs = aov_layers(film, color, scale);
     std::vector<ExrLayer> layers = {{"", {"R", "G", "B", "A"}, &beauty, false}};
     layers.insert(layers.end(), aovs.layers.begin(), aovs.layers.end());
     write_exr(files.exr, layers, metadata, files.exr_options);
-    if (!files.preview.empty()) write_preview(files.preview, working, color, files.exposure);
+    if (!files.preview.empty()) write_preview(files.preview, working, color);
     return result;
 }
 

@@ -17,7 +17,7 @@ namespace penumbra {
 struct RenderFiles {
     std::string exr;      // the EXR's path
     std::string preview;  // the PNG/JPEG's path; empty: none
-    float exposure = 0;   // preview only, in stops
+    float exposure = 0;   // stops: the beauty (EXR and preview) is scaled by 2^exposure
     ExrOptions exr_options;
     std::string reference;  // EXR to compare with (same size, output colour space); empty: none
 };
@@ -26,8 +26,9 @@ struct RenderFilesResult {
     std::optional<double> mse, relmse;  // against RenderFiles::reference
 };
 
-// Writes the EXR and the preview of film (rendered in color's working space) and
-// returns the error against the reference. metadata is the caller's (scene, integrator,
+// Writes the EXR and the preview of film (rendered in color's working space), its beauty
+// scaled by 2^exposure (and the variance AOV by its square), and returns the error of the
+// exposed beauty against the reference. metadata is the caller's (scene, integrator,
 // spp, ...); color_metadata, camera_metadata and the reference's error are added.
 // Throws SceneError for a reference that cannot be read or does not match in size.
 RenderFilesResult write_render(const RenderFiles& files, const Film& film,
@@ -43,7 +44,8 @@ struct AovLayers {
     std::vector<Image> images;  // owned; layers point into it
     std::vector<ExrLayer> layers;
 };
-AovLayers aov_layers(const Film& film, const ColorPipeline& color);
+// radiance_scale multiplies the variance (by its square), as an exposure scales the beauty.
+AovLayers aov_layers(const Film& film, const ColorPipeline& color, float radiance_scale = 1);
 
 // "penumbra:colorspace" (the output space's name), "chromaticities" when known,
 // "penumbra:working_space" and "penumbra:ocio_config".

@@ -24,8 +24,16 @@ void convert_scene_colors(Scene& scene, const Mat3& m) {
         mat.base_color = Vec4(m * mat.base_color.xyz(), mat.base_color.w);
         mat.emissive = m * mat.emissive;
         mat.specular_color = m * mat.specular_color;
-        note(mat.base_color_texture);
-        note(mat.emissive_texture);
+        mat.sheen_color = m * mat.sheen_color;
+        mat.attenuation_color = m * mat.attenuation_color;
+        mat.diffuse_transmission_color = m * mat.diffuse_transmission_color;
+        // The sRGB-encoded textures are the colour ones (gltf_material*.cpp); A channels
+        // (specular-glossiness's glossiness) are left alone by convert_image_colors.
+        for (const TextureRef* r :
+             {&mat.base_color_texture, &mat.emissive_texture, &mat.specular_color_texture,
+              &mat.sheen_color_texture, &mat.diffuse_transmission_color_texture,
+              &mat.specular_glossiness_texture})
+            note(*r);
     }
     // The loader decodes an image once per encoding, so an image that a colour texture
     // uses holds colour only, even if a data texture shares the file.

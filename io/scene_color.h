@@ -8,12 +8,12 @@
 
 namespace penumbra {
 
-// Converts the colours of a loaded scene in place: material base colour, emissive and
-// specular colour factors, the images of colour textures (base colour, emissive; RGB
-// only, alpha untouched) and vertex colours. Data (metallic-roughness, normal,
-// occlusion, transmission textures and factors) stays as it is. Lights are converted
-// as the loader builds them (they hold their colour privately). Does nothing for the
-// identity, so Rec.709 renders are unchanged bit for bit.
+// Converts the colours of a loaded scene in place: material colour factors (base,
+// emissive, specular, sheen, attenuation, diffuse transmission), the images of colour
+// textures (the sRGB-encoded ones; RGB only, alpha untouched) and vertex colours. Data
+// (metallic-roughness, normal, occlusion, transmission textures and factors) stays as it
+// is. Lights are converted as the loader builds them (they hold their colour privately).
+// Does nothing for the identity, so Rec.709 renders are unchanged bit for bit.
 void convert_scene_colors(Scene& scene, const Mat3& rec709_to_working);
 // The same for one image (an environment map): RGB of 3 or 4 channels; gray is left
 // as it is (white maps to white).

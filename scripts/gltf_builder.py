@@ -5,6 +5,16 @@ import base64
 import math
 import struct
 
+# KHR_lights_punctual intensities are photometric (candela, lux) and penumbra converts
+# them at 683 lm/W. The scenes state their lights radiometrically (W/sr, W/m^2) and write
+# photometric(x); 683 x a round number divides back exactly.
+LUMENS_PER_WATT = 683.0
+
+
+def photometric(radiometric):
+    """candela for a radiant intensity in W/sr, lux for an irradiance in W/m^2."""
+    return radiometric * LUMENS_PER_WATT
+
 
 class Builder:
     def __init__(self):

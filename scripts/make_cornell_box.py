@@ -13,12 +13,13 @@ Run from the repository root:  python3 scripts/make_cornell_box.py
 """
 import json
 
-from gltf_builder import Builder, buffers, merge, quad, unit_cube, uv_sphere, y_rotation
+from gltf_builder import (Builder, buffers, merge, photometric, quad, unit_cube, uv_sphere,
+                          y_rotation)
 
 WHITE = [0.75, 0.75, 0.75, 1.0]
 RED = [0.63, 0.065, 0.05, 1.0]
 GREEN = [0.14, 0.45, 0.091, 1.0]
-LIGHT_INTENSITY_CD = 8.0
+LIGHT_INTENSITY = 8.0  # W/sr
 LIGHT_POSITION = [0.0, 0.95, 0.0]
 PANEL_RADIANCE = 30.0
 
@@ -97,7 +98,7 @@ def scene(point_light):
     if point_light:
         gltf["extensions"] = {"KHR_lights_punctual": {"lights": [
             {"name": "ceiling-point", "type": "point", "color": [1.0, 1.0, 1.0],
-             "intensity": LIGHT_INTENSITY_CD}]}}
+             "intensity": photometric(LIGHT_INTENSITY)}]}}
     return gltf
 
 

@@ -16,7 +16,7 @@ Run from the repository root:  python3 scripts/make_effect_scenes.py
 """
 import json
 
-from gltf_builder import Builder, buffers, merge, quad, unit_cube, uv_sphere
+from gltf_builder import Builder, buffers, merge, photometric, quad, unit_cube, uv_sphere
 
 
 def write(path, gltf):
@@ -76,7 +76,8 @@ def dof():
                 # A wide lens, to make the blur obvious: 5 cm aperture radius (f/0.5
                 # for this field of view), focused on the middle sphere, 6 m away.
                 "extras": {"aperture_radius": 0.05, "focus_distance": 6.0, "blades": 6}}]
-    lights = [{"name": "sun", "type": "directional", "intensity": 3.0}]
+    lights = [{"name": "sun", "type": "directional",
+               "intensity": photometric(3.0)}]
     write("scenes/dof.gltf", document(b, "dof", nodes, meshes, materials, cameras, lights))
 
 

@@ -23,7 +23,7 @@ import math
 import struct
 import zlib
 
-from gltf_builder import Builder, buffers, merge, quad, unit_cube, uv_sphere
+from gltf_builder import Builder, buffers, merge, photometric, quad, unit_cube, uv_sphere
 
 OUT = "scenes/hard/"
 
@@ -76,7 +76,8 @@ def write(name, b, gltf):
 def sun(intensity=1.0):
     return {"extensionsUsed": ["KHR_lights_punctual", "KHR_materials_specular"],
             "extensions": {"KHR_lights_punctual": {"lights": [
-                {"name": "sun", "type": "directional", "intensity": intensity}]}}}
+                {"name": "sun", "type": "directional",
+                 "intensity": photometric(intensity)}]}}}
 
 
 def acne_plane():
@@ -161,7 +162,7 @@ def lights_scene():
         "extensionsUsed": ["KHR_lights_punctual", "KHR_materials_specular",
                            "KHR_materials_emissive_strength"],
         "extensions": {"KHR_lights_punctual": {"lights": [
-            {"name": "boxed", "type": "point", "intensity": 100.0},
+            {"name": "boxed", "type": "point", "intensity": photometric(100.0)},
             {"name": "dark", "type": "spot", "intensity": 0.0, "spot": {}}]}},
         "materials": [lambertian("white"), emitter("zero-area", 10.0), emitter("tiny", 1e8)],
         "meshes": [{"name": "floor", "primitives": [b.primitive(*grid(2, 2.0, -0.5), 0)]},

@@ -15,7 +15,7 @@ import math
 import random
 import struct
 
-from gltf_builder import Builder, buffers, uv_sphere
+from gltf_builder import Builder, buffers, photometric, uv_sphere
 
 
 def main():
@@ -63,7 +63,7 @@ def main():
         ],
         "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
         "extensions": {"KHR_lights_punctual": {"lights": [
-            {"type": "directional", "intensity": 3.0}]}},
+            {"type": "directional", "intensity": photometric(3.0)}]}},
         "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.5, 0.3, 1.0],
                                                 "metallicFactor": 0.0, "roughnessFactor": 0.5}}],
         "meshes": [{"name": "sphere", "primitives": [prim]}],

@@ -12,7 +12,7 @@ Run from the repository root:  python3 scripts/make_material_spheres.py
 """
 import json
 
-from gltf_builder import Builder, buffers, uv_sphere
+from gltf_builder import Builder, buffers, photometric, uv_sphere
 
 N = 5
 SPACING = 2.5
@@ -52,7 +52,7 @@ def main():
         "cameras": [{"name": "front", "type": "perspective",
                      "perspective": {"yfov": 0.6, "aspectRatio": 1.0, "znear": 0.1}}],
         "extensions": {"KHR_lights_punctual": {"lights": [
-            {"name": "key", "type": "directional", "intensity": 3.0}]}},
+            {"name": "key", "type": "directional", "intensity": photometric(3.0)}]}},
         "materials": materials,
         "meshes": meshes,
         "accessors": b.accessors,

@@ -7,7 +7,7 @@ import json
 import math
 import struct
 
-from gltf_builder import Builder, buffers, quad, unit_cube, uv_sphere
+from gltf_builder import Builder, buffers, photometric, quad, unit_cube, uv_sphere
 
 
 def scalars(b, values):
@@ -113,7 +113,7 @@ def scene():
         "asset": {"version": "2.0", "generator": "penumbra scripts/make_motion_blur.py"},
         "extensionsUsed": ["KHR_lights_punctual"],
         "extensions": {"KHR_lights_punctual": {"lights": [
-            {"name": "sun", "type": "directional", "intensity": 3.0}]}},
+            {"name": "sun", "type": "directional", "intensity": photometric(3.0)}]}},
         "scene": 0,
         "scenes": [{"name": "motion-blur", "nodes": list(range(len(nodes)))}],
         "nodes": nodes,

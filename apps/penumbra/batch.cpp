@@ -25,6 +25,7 @@ namespace {
 
 void apply(const JobSettings& s, RenderCommandOptions& o) {
     if (s.camera) o.camera = *s.camera;
+    if (s.variant) o.variant = *s.variant;
     if (s.integrator) o.integrator = *s.integrator;
     if (s.strategy) o.strategy = *s.strategy;
     if (s.sampler) o.sampler = *s.sampler;
@@ -63,6 +64,9 @@ void apply(const JobSettings& s, RenderCommandOptions& o) {
     if (s.aov) o.aovs = *s.aov;
     if (s.half) o.half = *s.half;
     if (s.compression) o.compression = *s.compression;
+    if (s.light_units) o.light_units = *s.light_units;
+    if (s.default_light) o.default_light = *s.default_light;
+    if (s.exposure) o.exposure = float(*s.exposure);
 }
 
 // Option values the command line checks with CLI11 but a job file can spell freely.

@@ -41,6 +41,11 @@ void add_output_options(CLI::App* cmd, RenderCommandOptions& o) {
     cmd->add_option("--compression", o.compression, "EXR compression (pxr24, b44*, dwa* lossy)")
         ->capture_default_str()
         ->check(CLI::IsMember(exr_compressions()));
+    cmd->add_option("--exposure", o.exposure,
+                    "Exposure in stops: the EXR and the preview are scaled by 2^EV (recorded "
+                    "in the header as penumbra:exposure)")
+        ->capture_default_str()
+        ->check(CLI::Range(-64.0f, 64.0f));
     cmd->add_option("--reference", o.reference,
                     "Reference EXR (same size, output colour space): MSE and relMSE go into "
                     "the header and the summary")

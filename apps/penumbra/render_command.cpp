@@ -129,6 +129,11 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
         {"penumbra:microfacet", o.microfacet},
         {"penumbra:gltf_layering", o.gltf_layering},
         {"penumbra:max_depth", std::to_string(o.max_depth)},
+        // How the image's light was set up: glTF light units, default lights, exposure.
+        {"penumbra:light_units", o.light_units},
+        {"penumbra:default_light", o.default_light},
+        {"penumbra:default_lights_added", setup->default_lights ? "1" : "0"},
+        {"penumbra:exposure", o.exposure},
         {"penumbra:accelerator", o.accel},
         {"penumbra:sampler", o.sampler},
         {"penumbra:filter", o.filter},
@@ -162,6 +167,7 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
     RenderFiles files;
     files.exr = output;
     if (!o.no_preview) files.preview = preview_path_for(output);
+    files.exposure = o.exposure;
     files.exr_options = {o.half, o.compression};
     files.reference = o.reference;
     const RenderFilesResult written =

@@ -30,6 +30,7 @@ struct RenderCommandOptions {
     int threads = 0;
     unsigned long long seed = 0;
     std::string camera;   // name or index; empty: the first camera, or a default one
+    std::string variant;  // KHR_materials_variants name; empty: default materials
     std::string integrator = "path";
     std::string strategy = "mis";
     std::string microfacet = "ggx";  // glTF specular lobes: ggx | beckmann
@@ -47,12 +48,16 @@ struct RenderCommandOptions {
     float fstop = 0, aperture_radius = -1, focus_distance = 0;
     int aperture_blades = -1;
     std::vector<float> focus_on;  // raster x y
-    bool default_light = true;
+    // Default key and fill lights: auto (when the scene's own light is too weak; see
+    // scene_setup.cpp), on, off.
+    std::string default_light = "auto";
+    std::string light_units = "photometric";  // KHR_lights_punctual: photometric | radiometric
     bool quiet = false;
     // Colour management and EXR output (output_options.cpp).
     ColorSettings color;
     std::string aovs;                 // --aov list; empty: none
     bool half = false;
+    float exposure = 0;               // stops: the EXR and the preview are scaled by 2^exposure
     std::string compression = "zip";
     std::string reference;            // EXR to measure MSE and relMSE against
     bool timing_metadata = false;     // render time in the header (not reproducible)

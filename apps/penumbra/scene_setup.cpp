@@ -4,12 +4,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <optional>
+#include <stdexcept>
 
 #include "core/camera/autofocus.h"
 #include "core/camera/default_camera.h"
 #include "core/camera/thin_lens_camera.h"
 #include "core/error.h"
-#include "core/lights/directional_light.h"
+#include "core/lights/default_lights.h"
 #include "core/log.h"
 #include "io/gltf_loader.h"
 #include "io/image_reader.h"
@@ -37,6 +38,9 @@ void add_image_options(CLI::App* cmd, RenderCommandOptions& o) {
     cmd->add_option("--camera", o.camera,
                     "Camera by name or index (default: the first camera in the file, else "
                     "one framing the whole scene)");
+    cmd->add_option("--variant", o.variant,
+                    "glTF material variant by name (KHR_materials_variants; default: the "
+                    "default materials)");
     std::string integrator_help = "Integrator:";
     std::vector<std::string> integrator_list;
     for (const auto& [name, desc] : integrator_names()) {
@@ -109,9 +113,19 @@ void add_image_options(CLI::App* cmd, RenderCommandOptions& o) {
     cmd->add_option("--aperture-blades", o.aperture_blades,
                     "Depth of field: aperture blades (0: circular, >= 3: polygonal bokeh)")
         ->check(CLI::Range(0, 64));
-    cmd->add_flag("!--no-default-light", o.default_light,
-                  "Do not light scenes that have no lights of their own (otherwise: a key "
-                  "light and a dim uniform environment)");
+    cmd->add_option("--default-light", o.default_light,
+                    "Default key and fill lights and a dim environment: auto (when the scene "
+                    "has no lights, no environment and no emitters bright and large enough to "
+                    "light it), on (always), off (never)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"auto", "on", "off"}));
+    cmd->add_flag_callback(
+        "--no-default-light", [&o] { o.default_light = "off"; }, "Same as --default-light off");
+    cmd->add_option("--light-units", o.light_units,
+                    "KHR_lights_punctual intensities: photometric (candela and lux, as the "
+                    "spec says, converted at 683 lm/W) or radiometric (read as W/sr and W/m^2)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"photometric", "radiometric"}));
 }
 
 namespace {
@@ -136,17 +150,6 @@ float scene_radius(const Scene& scene) {
     return b.empty() ? 1.0f : std::max(0.5f * length(b.diagonal()), 1e-3f);
 }
 
-// Scenes exported without lights would render black: light them like a product shot,
-// a key light from the upper right of the camera and a dimmer fill from the left.
-void add_default_lights(Scene& scene, const CameraDesc& cam) {
-    const float radius = scene_radius(scene);
-    const Transform& xf = cam.to_world;
-    const Vec3 key = normalize(xf.vector(Vec3(-0.5f, -0.7f, -1.0f)));
-    const Vec3 fill = normalize(xf.vector(Vec3(0.8f, -0.2f, -1.0f)));
-    scene.lights.push_back(std::make_unique<DirectionalLight>(key, Spectrum(2.5f), radius));
-    scene.lights.push_back(std::make_unique<DirectionalLight>(fill, Spectrum(0.6f), radius));
-}
-
 // Environment images and colours are taken as linear Rec.709, like glTF's colours.
 std::unique_ptr<EnvironmentLight> make_environment(const RenderCommandOptions& o,
                                                    const Scene& scene,
@@ -163,12 +166,6 @@ std::unique_ptr<EnvironmentLight> make_environment(const RenderCommandOptions& o
                 o.env_intensity,
             scene_radius(scene));
     return nullptr;
-}
-
-bool has_emission(const Scene& scene) {
-    for (const MaterialDesc& m : scene.materials)
-        if (m.is_emissive()) return true;
-    return false;
 }
 
 // Command-line depth of field settings override the file's; focusing on a pixel needs
@@ -215,6 +212,12 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     auto t0 = Clock::now();
     GltfLoadOptions load;
     load.rec709_to_working = s->color->rec709_to_working();
+    load.variant = o.variant;
+    try {
+        load.light_units = parse_light_units(o.light_units);
+    } catch (const std::invalid_argument& e) {
+        throw SceneError(path + ": " + e.what());
+    }
     try {
         const ShutterInterval shutter = resolve_shutter(o.timeline);
         load.shutter_open = shutter.open;
@@ -244,11 +247,18 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     if (!file_cam) LOG_INFO(path << ": no camera in the file; using one that frames the scene");
     std::unique_ptr<EnvironmentLight> env =
         make_environment(o, scene, s->color->rec709_to_working());
-    if (scene.lights.empty() && !has_emission(scene) && !env && o.default_light) {
-        LOG_INFO(path << ": no lights in the file; adding a key light and a dim environment "
-                         "(--no-default-light to disable)");
-        add_default_lights(scene, s->camera_desc);
-        env = std::make_unique<EnvironmentLight>(Spectrum(0.3f), scene_radius(scene));
+    DefaultLightMode mode = DefaultLightMode::Auto;
+    try {
+        mode = parse_default_light_mode(o.default_light);
+    } catch (const std::invalid_argument& e) {
+        throw SceneError(path + ": " + e.what());
+    }
+    const LightingChoice lighting = choose_lighting(mode, scene, env != nullptr);
+    s->default_lights = lighting.add_defaults;
+    LOG_INFO(path << ": lighting: " << lighting.reason);
+    if (lighting.add_defaults) {
+        std::unique_ptr<EnvironmentLight> dim = add_default_lights(scene, s->camera_desc);
+        if (!env) env = std::move(dim);
     }
     s->lights = std::make_unique<LightSet>(scene, std::move(env));
 

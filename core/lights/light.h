@@ -1,6 +1,6 @@
-// Light sources. Radiometric units follow glTF's photometric ones one to one (a point
-// light of 1 cd has radiant intensity 1, a directional light of 1 lux gives irradiance 1,
-// an emissive factor of 1 is radiance 1), so lights and emissive surfaces stay consistent.
+// Light sources, in radiometric units: radiant intensity (W/sr) for point and spot lights,
+// irradiance (W/m^2) for directional ones, radiance for emitters and the environment. glTF's
+// candela and lux are divided by 683 lm/W at load (light_units.h); emission stays radiance.
 #pragma once
 
 #include <optional>

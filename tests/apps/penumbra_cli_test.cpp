@@ -118,7 +118,8 @@ TEST_F(CliTest, HelpListsEveryOption) {
     const Result r = run("render --help");
     EXPECT_EQ(r.status, 0);
     for (const char* opt : {"--output", "--spp", "--width", "--height", "--threads", "--seed",
-                            "--camera", "--integrator", "basic", "albedo"})
+                            "--camera", "--integrator", "basic", "albedo", "--light-units",
+                            "--default-light", "--no-default-light", "--exposure"})
         EXPECT_NE(r.output.find(opt), std::string::npos) << opt;
 }
 

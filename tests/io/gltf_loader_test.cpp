@@ -139,8 +139,8 @@ TEST(GltfLoader, NodesCamerasAndLights) {
                    "perspective": {"yfov": 0.5, "znear": 0.1}}],
       "extensionsUsed": ["KHR_lights_punctual"],
       "extensions": {"KHR_lights_punctual": {"lights": [
-        {"type": "point", "color": [1, 0.5, 0.25], "intensity": 8},
-        {"type": "spot", "intensity": 2, "spot": {"outerConeAngle": 0.5}},
+        {"type": "point", "color": [1, 0.5, 0.25], "intensity": 5464},
+        {"type": "spot", "intensity": 1366, "spot": {"outerConeAngle": 0.5}},
         {"type": "directional", "range": 3}]}},
       "nodes": [
         {"mesh": 0, "children": [1], "translation": [10, 0, 0]},
@@ -173,8 +173,8 @@ TEST(GltfLoader, NodesCamerasAndLights) {
     EXPECT_EQ(s.lights[0]->describe(), "point");
     EXPECT_EQ(s.lights[1]->describe(), "spot");
     EXPECT_EQ(s.lights[2]->describe(), "directional");
-    // The point light's intensity is colour * intensity: check through sample_Li at a
-    // receiver 1 unit away from (1, 2, 3).
+    // The point light's intensity is colour * intensity / 683 lm/W (5464 cd = 8 W/sr):
+    // check through sample_Li at a receiver 1 unit away from (1, 2, 3).
     const auto ls = s.lights[0]->sample_Li({{1, 2, 4}, {0, 0, -1}}, {0.5f, 0.5f}, 0);
     ASSERT_TRUE(ls.has_value());
     expect_near(ls->Li, {8, 4, 2}, 1e-4f);
@@ -185,11 +185,51 @@ TEST(GltfLoader, NodesCamerasAndLights) {
     expect_near(below->Li, Spectrum(2.0f / 4.0f), 1e-4f);
     const auto above = s.lights[1]->sample_Li({{0, 2, 0}, {0, -1, 0}}, {0.5f, 0.5f}, 0);
     EXPECT_TRUE(!above.has_value() || is_black(above->Li));
-    // Directional: travels along -Z, white, intensity 1.
+    // Directional: travels along -Z, white, the spec's default intensity of 1 lux.
     const auto sun = s.lights[2]->sample_Li({{0, 0, 0}, {0, 0, 1}}, {0.5f, 0.5f}, 0);
     ASSERT_TRUE(sun.has_value());
     expect_near(sun->wi, {0, 0, 1});
-    expect_near(sun->Li, Spectrum(1));
+    EXPECT_FLOAT_EQ(sun->Li.x, float(1.0 / 683.0));
+    EXPECT_EQ(sun->Li.x, sun->Li.y);
+    EXPECT_EQ(sun->Li.x, sun->Li.z);
+}
+
+// KHR_lights_punctual intensities are candela and lux; --light-units radiometric reads the
+// same numbers as W/sr and W/m^2, exactly 683 times brighter, for every light type.
+TEST(GltfLoader, LightUnitsPhotometricByDefaultRadiometricOnRequest) {
+    ScratchDir dir;
+    GltfBuilder b;
+    b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
+    const std::string members = R"(
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+      "extensionsUsed": ["KHR_lights_punctual"],
+      "extensions": {"KHR_lights_punctual": {"lights": [
+        {"type": "point", "intensity": 1000},
+        {"type": "spot", "intensity": 683, "spot": {"outerConeAngle": 0.5}},
+        {"type": "directional", "intensity": 100000}]}},
+      "nodes": [{"mesh": 0},
+        {"extensions": {"KHR_lights_punctual": {"light": 0}}, "translation": [0, 0, 2]},
+        {"extensions": {"KHR_lights_punctual": {"light": 1}}, "translation": [0, 0, 2]},
+        {"extensions": {"KHR_lights_punctual": {"light": 2}}}],
+      "scenes": [{"nodes": [0, 1, 2, 3]}])";
+    const std::string path = b.write(dir, "units.gltf", members, BufferStorage::DataUri);
+    const Scene photometric = load_gltf(path);
+    GltfLoadOptions lo;
+    lo.light_units = LightUnits::Radiometric;
+    const Scene radiometric = load_gltf(path, lo);
+    ASSERT_EQ(photometric.lights.size(), 3u);
+    ASSERT_EQ(radiometric.lights.size(), 3u);
+    // The receiver at the origin faces +Z: 2 m below the point and the spot (which looks
+    // down -Z onto it), and lit by the sun along its direction.
+    const ShadingPoint at{{0, 0, 0}, {0, 0, 1}};
+    const float expected[3] = {1000.0f / 683 / 4, 1.0f / 4, 100000.0f / 683};
+    for (size_t i = 0; i < 3; ++i) {
+        const auto p = photometric.lights[i]->sample_Li(at, {0.5f, 0.5f}, 0);
+        const auto r = radiometric.lights[i]->sample_Li(at, {0.5f, 0.5f}, 0);
+        ASSERT_TRUE(p && r) << i;
+        EXPECT_NEAR(p->Li.y, expected[i], 1e-6f * expected[i]) << i;
+        EXPECT_NEAR(r->Li.y / p->Li.y, 683.0f, 683.0f * 1e-6f) << i;
+    }
 }
 
 TEST(GltfLoader, ChoosesTheRequestedScene) {

@@ -38,6 +38,8 @@ const InvalidScene kInvalidScenes[] = {
      "accessors[0]: bufferView[0] range [0, 36) exceeds buffer 0 of 24 bytes"},
     {"index-out-of-range.gltf", "meshes[0].primitives[0]: index 7 out of range (3 vertices)"},
     {"malformed.gltf", "parse error at line 11"},
+    {"material-out-of-range.gltf",
+     "materials[0].extensions.KHR_materials_sheen: sheenRoughnessFactor 1.2 is outside [0, 1]"},
     {"missing-image.gltf", "images[0]: cannot read image file 'missing.png'"},
     {"nan-position.gltf", "meshes[0].primitives[0]: POSITION element 1 is not finite"},
     {"nan-tangent.gltf", "meshes[0].primitives[0]: TANGENT element 2 is not finite"},
@@ -45,6 +47,9 @@ const InvalidScene kInvalidScenes[] = {
     {"skin-joint-out-of-range.gltf", "skins[0]: joint node index 5 out of range (1 nodes)"},
     {"unsupported-extension.gltf",
      "extensionsRequired: unsupported extension 'KHR_draco_mesh_compression'"},
+    {"variant-bad-material.gltf",
+     "meshes[0].primitives[0].extensions.KHR_materials_variants.mappings[0]: material index 3 "
+     "out of range (1 materials)"},
     {"wrong-position-type.gltf",
      "meshes[0].primitives[0]: POSITION accessor 0 is VEC2 of float; expected VEC3"},
     {"zero-positions.gltf", "meshes[0].primitives[0]: POSITION accessor has 0 elements"},

@@ -115,6 +115,36 @@ TEST(JobFile, ColourAndOutputKeys) {
     }
 }
 
+TEST(JobFile, LightKeys) {
+    const JobFile f = parse_job_file(
+        R"({"defaults": {"light_units": "radiometric", "exposure": 1.5},
+            "jobs": [{"scene": "a.gltf", "default_light": "off", "exposure": -2}]})",
+        "/jobs/j.json");
+    EXPECT_EQ(f.defaults.light_units, "radiometric");
+    EXPECT_EQ(f.defaults.exposure, 1.5);
+    EXPECT_FALSE(f.defaults.default_light);
+    EXPECT_EQ(f.jobs[0].settings.default_light, "off");
+    EXPECT_EQ(f.jobs[0].settings.exposure, -2.0);
+    EXPECT_FALSE(f.jobs[0].settings.light_units);
+    const std::pair<const char*, const char*> bad[] = {
+        {R"("light_units": "lumens")",
+         "j.json: jobs[0].light_units: 'lumens' is not one of: photometric, radiometric"},
+        {R"("default_light": true)", "j.json: jobs[0].default_light: expected a non-empty string"},
+        {R"("default_light": "maybe")",
+         "j.json: jobs[0].default_light: 'maybe' is not one of: auto, on, off"},
+        {R"("exposure": "bright")", "j.json: jobs[0].exposure: expected a finite number"},
+        {R"("exposure": 100)", "j.json: jobs[0].exposure: expected stops in [-64, 64]"}};
+    for (const auto& [member, message] : bad) {
+        try {
+            parse_job_file(std::string(R"({"jobs": [{"scene": "a.gltf", )") + member + "}]}",
+                           "j.json");
+            FAIL() << member;
+        } catch (const SceneError& e) {
+            EXPECT_EQ(std::string(e.what()), message);
+        }
+    }
+}
+
 TEST(JobFile, FrameLists) {
     EXPECT_EQ(parse_frame_list("7"), std::vector<int>({7}));
     EXPECT_EQ(parse_frame_list("1-4"), std::vector<int>({1, 2, 3, 4}));

@@ -42,7 +42,7 @@ std::string write_scene(const ScratchDir& dir) {
                                                  "COLOR_0": 2}, "material": 0}]}],
       "extensionsUsed": ["KHR_lights_punctual"],
       "extensions": {"KHR_lights_punctual": {"lights": [
-        {"type": "point", "color": [1, 0, 0], "intensity": 2}]}},
+        {"type": "point", "color": [1, 0, 0], "intensity": 1366}]}},
       "nodes": [{"mesh": 0}, {"extensions": {"KHR_lights_punctual": {"light": 0}},
                               "translation": [0, 0, 1]}],
       "scenes": [{"nodes": [0, 1]}], "scene": 0)";

@@ -1,0 +1,150 @@
+#include "io/gltf_material_textures.h"
+
+#include "io/gltf_accessor.h"
+#include "io/gltf_material_json.h"
+
+namespace penumbra {
+
+namespace {
+
+// The KHR_texture_transform object of a textureInfo's extensions, or a null Value.
+const tinygltf::Value& texture_transform(const tinygltf::ExtensionMap& extensions) {
+    static const tinygltf::Value none;
+    const auto it = extensions.find("KHR_texture_transform");
+    return it == extensions.end() ? none : it->second;
+}
+
+}  // namespace
+
+TextureRef TextureTable::ref(const std::string& el, int texture, int texcoord,
+                             ImageEncoding encoding, const tinygltf::ExtensionMap& extensions) {
+    TextureRef r;
+    if (texture == -1) return r;  // tinygltf's "absent"
+    m_ctx.check_index(el, "texture", texture, m_ctx.model.textures.size(), "textures");
+    const tinygltf::Value& xf = texture_transform(extensions);
+    if (xf.IsObject()) {
+        const std::string xel = el + ".extensions.KHR_texture_transform";
+        r.offset = json_vec2(m_ctx, xel, xf, "offset", r.offset);
+        r.rotation = json_number(m_ctx, xel, xf, "rotation", r.rotation);
+        r.scale = json_vec2(m_ctx, xel, xf, "scale", r.scale);
+        if (xf.Has("texCoord")) {
+            if (!xf.Get("texCoord").IsInt()) m_ctx.fail(xel, "texCoord is not an integer");
+            texcoord = xf.Get("texCoord").GetNumberAsInt();
+        }
+    }
+    if (texcoord < 0) m_ctx.fail(el, "texCoord " + std::to_string(texcoord) + " is negative");
+    // TriangleMesh keeps TEXCOORD_0 and _1 only.
+    if (texcoord > 1) {
+        m_ctx.warn(el,
+                   "TEXCOORD_" + std::to_string(texcoord) + " is not supported; using TEXCOORD_0");
+        texcoord = 0;
+    }
+    r.texture = texture_index(texture, encoding);
+    r.texcoord = texcoord;
+    return r;
+}
+
+TextureRef TextureTable::json_ref(const std::string& el, const tinygltf::Value& obj,
+                                  const char* key, ImageEncoding encoding, float* scale) {
+    if (!obj.Has(key)) return {};
+    const std::string tel = el + "." + key;
+    const tinygltf::Value& info = obj.Get(key);
+    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt())
+        m_ctx.fail(tel, "must be a textureInfo with an integer index");
+    int texcoord = 0;
+    if (info.Has("texCoord")) {
+        if (!info.Get("texCoord").IsInt()) m_ctx.fail(tel, "texCoord is not an integer");
+        texcoord = info.Get("texCoord").GetNumberAsInt();
+    }
+    if (scale) *scale = json_number(m_ctx, tel, info, "scale", 1.0f);
+    tinygltf::ExtensionMap extensions;
+    if (info.Has("extensions") && info.Get("extensions").Has("KHR_texture_transform"))
+        extensions["KHR_texture_transform"] = info.Get("extensions").Get("KHR_texture_transform");
+    const int index = info.Get("index").GetNumberAsInt();
+    // ref() takes -1 as tinygltf's "absent"; written in the file, it is a bad index.
+    if (index < 0)
+        m_ctx.check_index(tel, "texture", index, m_ctx.model.textures.size(), "textures");
+    return ref(tel, index, texcoord, encoding, extensions);
+}
+
+int TextureTable::texture_index(int index, ImageEncoding encoding) {
+    const auto key = std::make_pair(index, int(encoding));
+    if (auto it = m_textures.find(key); it != m_textures.end()) return it->second;
+    const tinygltf::Texture& gt = m_ctx.model.textures[size_t(index)];
+    const std::string el = element("textures", size_t(index));
+    Texture tex;
+    if (gt.sampler != -1) {
+        m_ctx.check_index(el, "sampler", gt.sampler, m_ctx.model.samplers.size(), "samplers");
+        const tinygltf::Sampler& s = m_ctx.model.samplers[size_t(gt.sampler)];
+        const std::string sel = element("samplers", size_t(gt.sampler));
+        tex.wrap_s = wrap_mode(sel, "wrapS", s.wrapS);
+        tex.wrap_t = wrap_mode(sel, "wrapT", s.wrapT);
+        tex.nearest = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+    }
+    tex.image = uint32_t(image_index(image_source(gt, el), encoding));
+    const int result = int(m_scene.textures.size());
+    m_scene.textures.push_back(tex);
+    m_textures.emplace(key, result);
+    return result;
+}
+
+// EXT_texture_webp: the WebP image when the texture names one (OIIO decodes WebP); the
+// core `source` is then only the fallback for viewers without WebP. KHR_texture_basisu
+// (KTX2) is not read, so a texture with only that source is an error.
+int TextureTable::image_source(const tinygltf::Texture& gt, const std::string& el) const {
+    const tinygltf::Value& webp = extension_object(gt.extensions, "EXT_texture_webp");
+    if (webp.IsObject()) {
+        const std::string wel = el + ".extensions.EXT_texture_webp";
+        if (!webp.Has("source") || !webp.Get("source").IsInt())
+            m_ctx.fail(wel, "source must be an integer image index");
+        const int source = webp.Get("source").GetNumberAsInt();
+        m_ctx.check_index(wel, "source", source, m_ctx.model.images.size(), "images");
+        return source;
+    }
+    if (gt.source == -1) {
+        if (gt.extensions.count("KHR_texture_basisu"))
+            m_ctx.fail(el, "has only a KHR_texture_basisu (KTX2) source, which is not supported");
+        m_ctx.fail(el, "has no source image");
+    }
+    m_ctx.check_index(el, "source", gt.source, m_ctx.model.images.size(), "images");
+    return gt.source;
+}
+
+int TextureTable::image_index(int index, ImageEncoding encoding) {
+    const auto key = std::make_pair(index, int(encoding));
+    if (auto it = m_images.find(key); it != m_images.end()) return it->second;
+    const tinygltf::Image& gi = m_ctx.model.images[size_t(index)];
+    const std::string el = element("images", size_t(index));
+    const bool external = !gi.uri.empty() && gi.uri.compare(0, 5, "data:") != 0;
+    std::vector<uint8_t> bytes;
+    if (gi.bufferView >= 0)
+        bytes = buffer_view_bytes(m_ctx, el, gi.bufferView);
+    else if (!gi.image.empty())
+        bytes = gi.image;  // captured undecoded by the loader's image callback
+    else if (external)
+        m_ctx.fail(el, "cannot read image file '" + gi.uri + "'");
+    else
+        m_ctx.fail(el, "has no image data");
+    Image img = decode_image(bytes, m_ctx.file + ": " + el, encoding);
+    img.name = external ? gi.uri : (gi.name.empty() ? el : gi.name);
+    const int result = int(m_scene.images.size());
+    m_scene.images.push_back(std::move(img));
+    m_images.emplace(key, result);
+    return result;
+}
+
+WrapMode TextureTable::wrap_mode(const std::string& el, const char* what, int mode) const {
+    switch (mode) {
+        case TINYGLTF_TEXTURE_WRAP_REPEAT:
+            return WrapMode::Repeat;
+        case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
+            return WrapMode::ClampToEdge;
+        case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
+            return WrapMode::MirroredRepeat;
+        default:
+            m_ctx.fail(el,
+                       std::string(what) + " " + std::to_string(mode) + " is not a glTF wrap mode");
+    }
+}
+
+}  // namespace penumbra

@@ -1,0 +1,40 @@
+// Internal to io/: the Scene textures and images that materials use, created on first
+// use and keyed by the glTF texture index and the encoding the use implies (an image used
+// as colour and as data is decoded twice, so each Scene image has one encoding).
+#pragma once
+
+#include <map>
+#include <utility>
+
+#include "io/gltf_context.h"
+#include "io/image_reader.h"
+
+namespace penumbra {
+
+class TextureTable {
+public:
+    TextureTable(const GltfContext& ctx, Scene& scene) : m_ctx(ctx), m_scene(scene) {}
+
+    // The reference for a glTF textureInfo at element path `el`, with the extensions of
+    // that textureInfo (for KHR_texture_transform). texture -1: none.
+    TextureRef ref(const std::string& el, int texture, int texcoord, ImageEncoding encoding,
+                   const tinygltf::ExtensionMap& extensions);
+
+    // A textureInfo that tinygltf leaves as JSON (inside a material extension): obj[key]
+    // at element path `el` (`el.key` in messages). `scale`, when given, receives a
+    // normalTextureInfo's scale (default 1).
+    TextureRef json_ref(const std::string& el, const tinygltf::Value& obj, const char* key,
+                        ImageEncoding encoding, float* scale = nullptr);
+
+private:
+    int texture_index(int index, ImageEncoding encoding);
+    int image_source(const tinygltf::Texture& gt, const std::string& el) const;
+    int image_index(int index, ImageEncoding encoding);
+    WrapMode wrap_mode(const std::string& el, const char* what, int mode) const;
+
+    const GltfContext& m_ctx;
+    Scene& m_scene;
+    std::map<std::pair<int, int>, int> m_textures, m_images;
+};
+
+}  // namespace penumbra
