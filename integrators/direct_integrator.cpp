@@ -15,8 +15,14 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
     Spectrum L(0), beta(1);
     Ray ray = camera_ray;
     int passes = 0;
+    PathMedia media;  // camera rays start outside all media
     for (int depth = 0;;) {
         const std::optional<Hit> hit = ctx.accel.intersect(ray);
+        // As in the path tracer: escaping rays have left every volume.
+        if (hit && !media.stack.empty()) {
+            beta *= segment_transmittance(ctx, media.stack, ray, hit->t);
+            if (is_black(beta)) break;
+        }
         if (!hit) {
             if (const EnvironmentLight* env = ctx.lights.environment())
                 L += beta * env->Le(normalize(ray.d));
@@ -24,7 +30,10 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         }
         const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
         const Vec3 wo_world = normalize(-ray.d);
-        const ShadingData sd = shade(ctx.scene, sp, wo_world, ctx.materials);
+        dispersion_channel(ctx, media, sp.material, sampler, beta);
+        const bool front = dot(wo_world, sp.ng) >= 0;  // as shade() decides it
+        const ShadingData sd = shade(ctx.scene, sp, wo_world, ctx.materials,
+                                     path_volume(ctx, media, sp.material, front));
         if (pass_through(sp, sd, sampler, ray)) {
             if (++passes > 256) break;  // a stack of holes ends the path
             continue;
@@ -33,8 +42,9 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         const Bsdf& bsdf = *sd.bsdf.get();
         const Vec3 wo = sd.frame.to_local(wo_world);
 
+        const SideMedia sides = side_media(ctx, media.stack, sp.material, sd.front_face);
         L += beta * sample_light_stratified(ctx, sp, sd, wo, ray.time, sampler,
-                                            m_options.light_samples, strategy, nb);
+                                            m_options.light_samples, strategy, nb, sides);
 
         // BSDF samples: emission they find, MIS-weighted against the light samples. They
         // estimate the non-specular lobes only; specular lobes are followed below.
@@ -47,6 +57,9 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
             const Ray r = spawn_ray(sp, wi_world, std::numeric_limits<float>::infinity(), ray.time);
             const std::optional<Hit> h = ctx.accel.intersect(r);
             Spectrum Le(0);
+            Spectrum tr(1);
+            const Medium* m = bs->wi.z > 0 ? sides.wo_side : sides.far_side;
+            if (m && h) tr = m->transmittance(r, h->t);
             float w = 1;
             if (!h) {
                 const EnvironmentLight* env = ctx.lights.environment();
@@ -63,7 +76,7 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
                 w = emission_weight(ctx, light, sp.p, sd.ng, &lp.p, wi_world, ray.time, bs->pdf,
                                     strategy, nl, nb);
             }
-            L += beta * bs->weight() * Le *
+            L += beta * bs->weight() * tr * Le *
                  (w / nb * bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, wi_world));
         }
         // The specular part: one more sample, continued only when it picks a specular
@@ -75,6 +88,7 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         const Vec3 wi_world = sd.frame.to_world(specular->wi);
         if ((specular->wi.z > 0) != (dot(wi_world, side_normal(sp, sd.ng)) > 0)) break;
         beta *= specular->weight();
+        if (specular->wi.z < 0) cross_surface(ctx, media.stack, sp.material, sd.front_face);
         ray = spawn_ray(sp, wi_world, std::numeric_limits<float>::infinity(), ray.time);
     }
     return L;

@@ -37,7 +37,7 @@ namespace {
 Spectrum sample_chosen_light(const RenderContext& ctx, const SurfacePoint& sp,
                              const ShadingData& sd, Vec3 wo, float time, Sampler& sampler,
                              const SampledLight* chosen, Vec2 u, LightStrategy strategy,
-                             float light_samples, float bsdf_samples) {
+                             float light_samples, float bsdf_samples, const SideMedia& media) {
     const Light& light = *chosen->light;
     // Light-sampling estimates of non-delta lights are dropped under BSDF-only.
     if (strategy == LightStrategy::BsdfOnly && !light.is_delta()) return Spectrum(0);
@@ -52,31 +52,37 @@ Spectrum sample_chosen_light(const RenderContext& ctx, const SurfacePoint& sp,
     const Spectrum f = bsdf.eval(wo, wi, Transport::Radiance) *
                        bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, ls->wi);
     if (is_black(f)) return Spectrum(0);
-    if (!unoccluded(ctx, spawn_ray(sp, ls->wi, ls->dist, time), sampler)) return Spectrum(0);
+    const Ray shadow = spawn_ray(sp, ls->wi, ls->dist, time);
+    if (!unoccluded(ctx, shadow, sampler)) return Spectrum(0);
+    Spectrum tr(1);
+    if (const Medium* medium = wi.z > 0 ? media.wo_side : media.far_side)
+        tr = medium->transmittance(shadow, ls->dist);
     const float light_pdf = chosen->pmf * ls->pdf;
     float w = 1;
     if (!ls->delta && strategy == LightStrategy::Mis)
         w = power_heuristic(light_samples, light_pdf, bsdf_samples,
                             bsdf.pdf(wo, wi, Transport::Radiance));
-    return f * ls->Li * (std::abs(wi.z) * w / light_pdf);
+    return f * tr * ls->Li * (std::abs(wi.z) * w / light_pdf);
 }
 
 }  // namespace
 
 Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
                           const ShadingData& sd, Vec3 wo, float time, Sampler& sampler,
-                          LightStrategy strategy, float light_samples, float bsdf_samples) {
+                          LightStrategy strategy, float light_samples, float bsdf_samples,
+                          const SideMedia& media) {
     const float u_light = sampler.get_1d();
     const Vec2 u = sampler.get_2d();
     const std::optional<SampledLight> chosen = ctx.lights.sample(u_light);
     if (!chosen) return Spectrum(0);
     return sample_chosen_light(ctx, sp, sd, wo, time, sampler, &*chosen, u, strategy,
-                               light_samples, bsdf_samples);
+                               light_samples, bsdf_samples, media);
 }
 
 Spectrum sample_light_stratified(const RenderContext& ctx, const SurfacePoint& sp,
                                  const ShadingData& sd, Vec3 wo, float time, Sampler& sampler,
-                                 int n, LightStrategy strategy, float bsdf_samples) {
+                                 int n, LightStrategy strategy, float bsdf_samples,
+                                 const SideMedia& media) {
     if (n <= 0) return Spectrum(0);
     const std::optional<SampledLight> chosen = ctx.lights.sample(sampler.get_1d());
     // Latin hypercube over the light's sample square: sample i takes column i and row
@@ -99,7 +105,7 @@ Spectrum sample_light_stratified(const RenderContext& ctx, const SurfacePoint& s
         const Vec2 u(std::min((i + jitter.x) * inv_n, 0x1.fffffep-1f),
                      std::min((perm[i] + jitter.y) * inv_n, 0x1.fffffep-1f));
         sum += sample_chosen_light(ctx, sp, sd, wo, time, sampler, &*chosen, u, strategy,
-                                   float(n), bsdf_samples);
+                                   float(n), bsdf_samples, media);
     }
     return sum * inv_n;
 }

@@ -7,6 +7,7 @@
 
 #include "core/surface_point.h"
 #include "integrators/integrator.h"
+#include "integrators/path_media.h"
 #include "materials/material.h"
 
 namespace penumbra {
@@ -44,11 +45,13 @@ bool pass_through(const SurfacePoint& sp, const ShadingData& sd, Sampler& sample
 bool unoccluded(const RenderContext& ctx, Ray ray, Sampler& sampler);
 
 // One light sample at the shading point, MIS-weighted against `bsdf_samples` BSDF samples
-// per `light_samples` light samples when strategy is Mis. Returns f * Li * |cos| * w / pdf.
+// per `light_samples` light samples when strategy is Mis. Returns f * Li * |cos| * w / pdf,
+// times the transmittance of the medium the shadow ray starts in (media: wo's side for
+// reflection, the far side for transmission; surfaces on the way block it).
 Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
                           const ShadingData& sd, Vec3 wo, float time, Sampler& sampler,
                           LightStrategy strategy, float light_samples = 1,
-                          float bsdf_samples = 1);
+                          float bsdf_samples = 1, const SideMedia& media = {});
 
 // Distribution ray tracing's soft shadows: one light chosen by power, then n shadow rays
 // to n different points of it, stratified over the light (a Latin hypercube of its
@@ -56,7 +59,8 @@ Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
 // `bsdf_samples` BSDF samples per n light samples.
 Spectrum sample_light_stratified(const RenderContext& ctx, const SurfacePoint& sp,
                                  const ShadingData& sd, Vec3 wo, float time, Sampler& sampler,
-                                 int n, LightStrategy strategy, float bsdf_samples = 1);
+                                 int n, LightStrategy strategy, float bsdf_samples = 1,
+                                 const SideMedia& media = {});
 
 // MIS weight for emission found by a BSDF-sampled ray that left `prev_p` with solid-angle
 // density bsdf_pdf and hit `light` (a TriangleLight at hit_p, or the environment when

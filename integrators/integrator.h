@@ -8,6 +8,7 @@
 
 #include "core/accel/accel.h"
 #include "core/lights/light_set.h"
+#include "core/media/medium_set.h"
 #include "core/sampling/sampler.h"
 #include "core/scene/scene.h"
 #include "materials/material.h"
@@ -15,12 +16,20 @@
 namespace penumbra {
 
 // What an integrator traces against: the scene data, its accelerator and its lights.
+// The scene's media are built here, from its materials, so that every render (CLI,
+// tests, benchmarks) sees the same volumes.
 struct RenderContext {
+    RenderContext(const Scene& scene, const Accel& accel, const LightSet& lights,
+                  bool has_alpha = false, const MaterialOptions& materials = {})
+        : scene(scene), accel(accel), lights(lights), has_alpha(has_alpha),
+          materials(materials), media(scene) {}
+
     const Scene& scene;
     const Accel& accel;
     const LightSet& lights;
     bool has_alpha = false;  // some material is MASK or BLEND: rays test coverage
     MaterialOptions materials{};  // how glTF materials become BSDFs (--microfacet)
+    MediumSet media;  // the interior of each material with a volume
 };
 
 // Which strategies estimate light from non-delta emitters in "path": both with MIS, or

@@ -18,8 +18,16 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
     Vec3 prev_p, prev_n;
     int depth = 0;
     int passes = 0;  // surfaces skipped for alpha; bounded so a stack of holes ends
+    PathMedia media;  // camera rays start outside all media
     for (;;) {
         const std::optional<Hit> hit = ctx.accel.intersect(ray);
+        // The medium the segment lies in absorbs along it up to the hit. A ray that
+        // escapes has left every closed volume, whatever the stack says: it can only
+        // still hold one whose exit the ray grazed past within rounding at an edge.
+        if (hit && !media.stack.empty()) {
+            beta *= segment_transmittance(ctx, media.stack, ray, hit->t);
+            if (is_black(beta)) break;
+        }
         // Emission that a camera ray or a specular bounce finds can only come from BSDF
         // sampling: no light sample could have produced it.
         const bool unweighted = depth == 0 || specular_bounce;
@@ -35,7 +43,10 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         }
         const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
         const Vec3 wo_world = normalize(-ray.d);
-        const ShadingData sd = shade(ctx.scene, sp, wo_world, ctx.materials);
+        dispersion_channel(ctx, media, sp.material, sampler, beta);
+        const bool front = dot(wo_world, sp.ng) >= 0;  // as shade() decides it
+        const ShadingData sd = shade(ctx.scene, sp, wo_world, ctx.materials,
+                                     path_volume(ctx, media, sp.material, front));
 
         if (pass_through(sp, sd, sampler, ray)) {
             if (++passes > 256) break;  // a stack of holes ends the path
@@ -55,7 +66,8 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
 
         const Bsdf& bsdf = *sd.bsdf.get();
         const Vec3 wo = sd.frame.to_local(wo_world);
-        L += beta * sample_one_light(ctx, sp, sd, wo, ray.time, sampler, strategy);
+        L += beta * sample_one_light(ctx, sp, sd, wo, ray.time, sampler, strategy, 1, 1,
+                                     side_media(ctx, media.stack, sp.material, sd.front_face));
 
         const std::optional<BsdfSample> bs =
             bsdf.sample(wo, sampler.get_1d(), sampler.get_2d(), Transport::Radiance);
@@ -67,6 +79,8 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         if ((bs->wi.z > 0) != (dot(wi_world, side_normal(sp, sd.ng)) > 0)) break;
         // The same bump shadowing as the light samples' (direct_lighting.h).
         beta *= bs->weight() * bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, wi_world);
+        // The frame faces wo: a sample below it crossed the surface, into or out of a volume.
+        if (bs->wi.z < 0) cross_surface(ctx, media.stack, sp.material, sd.front_face);
         eta_scale *= bs->eta * bs->eta;
         specular_bounce = bs->is_specular();
         bsdf_pdf = bs->pdf;

@@ -79,6 +79,10 @@ float DielectricBsdf::pdf(Vec3 wo, Vec3 wi, Transport) const {
 
 std::optional<BsdfSample> DielectricBsdf::sample_smooth(Vec3 wo, float u_lobe,
                                                         Transport mode) const {
+    // Index-matched: no interface at all, straight through. (Fresnel and Snell in float
+    // would call a grazing wo, cos below ~2e-4, totally reflected: 1 - cos^2 rounds to 1.)
+    if (m_p.eta == 1) return BsdfSample{-wo, m_p.transmittance / std::abs(wo.z), 1,
+                                        Lobe::Specular, 1};
     const float F = fresnel_dielectric(wo.z, m_p.eta);
     if (u_lobe < F) {
         const Vec3 wi(-wo.x, -wo.y, wo.z);

@@ -17,14 +17,16 @@ MetalRoughParams GltfDiffuseTransmissionBsdf::with_metallic(MetalRoughParams p, 
 GltfDiffuseTransmissionBsdf::GltfDiffuseTransmissionBsdf(const MetalRoughParams& p,
                                                          const DiffuseTransmissionParams& dt,
                                                          float transmission,
-                                                         const DielectricParams& dielectric)
+                                                         const DielectricParams& dielectric,
+                                                         bool thin_walled)
     : m_opaque_base(p.base_color * (1 - std::clamp(dt.factor, 0.0f, 1.0f))),
       m_f0_max(max_component(p.dielectric_f0)),
       m_f90(p.dielectric_f90),
       m_metal(with_metallic(p, 1, 1)),
       m_opaque(with_metallic(p, 0, 1 - std::clamp(dt.factor, 0.0f, 1.0f))),
       m_dt(dt.color * std::clamp(dt.factor, 0.0f, 1.0f), SpecularLayerTransmittance(p)),
-      m_glass(dielectric) {
+      m_glass(thin_walled ? decltype(m_glass)(ThinDielectricBsdf(dielectric))
+                          : decltype(m_glass)(DielectricBsdf(dielectric))) {
     const float metallic = std::clamp(p.metallic, 0.0f, 1.0f);
     const float t = std::clamp(transmission, 0.0f, 1.0f);
     m_w[kMetal] = metallic;
@@ -35,7 +37,7 @@ GltfDiffuseTransmissionBsdf::GltfDiffuseTransmissionBsdf(const MetalRoughParams&
 bool GltfDiffuseTransmissionBsdf::has_specular() const {
     return (m_w[kMetal] > 0 && m_metal.has_specular()) ||
            (m_w[kOpaque] > 0 && m_opaque.has_specular()) ||
-           (m_w[kGlass] > 0 && m_glass.has_specular());
+           (m_w[kGlass] > 0 && glass().has_specular());
 }
 
 void GltfDiffuseTransmissionBsdf::probabilities(Vec3 wo, float q[kCount]) const {
@@ -62,7 +64,7 @@ Spectrum GltfDiffuseTransmissionBsdf::eval_component(int c, Vec3 wo, Vec3 wi,
         case kDiffuseTransmission:
             return m_dt.eval(wo, wi);
         default:
-            return m_glass.eval(wo, wi, mode);
+            return glass().eval(wo, wi, mode);
     }
 }
 
@@ -75,7 +77,7 @@ float GltfDiffuseTransmissionBsdf::pdf_component(int c, Vec3 wo, Vec3 wi, Transp
         case kDiffuseTransmission:
             return m_dt.pdf(wo, wi);
         default:
-            return m_glass.pdf(wo, wi, mode);
+            return glass().pdf(wo, wi, mode);
     }
 }
 
@@ -111,7 +113,7 @@ std::optional<BsdfSample> GltfDiffuseTransmissionBsdf::sample(Vec3 wo, float u_l
     } else {
         s = c == kMetal    ? m_metal.sample(wo, u_inner, u, mode)
             : c == kOpaque ? m_opaque.sample(wo, u_inner, u, mode)
-                           : m_glass.sample(wo, u_inner, u, mode);
+                           : glass().sample(wo, u_inner, u, mode);
     }
     if (!s) return std::nullopt;
     if (s->is_specular()) {

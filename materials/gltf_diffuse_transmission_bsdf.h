@@ -3,9 +3,12 @@
 // diffuse_btdf, dt), specular) + t specular_btdf), written as a mixture of four models.
 #pragma once
 
+#include <variant>
+
 #include "materials/dielectric.h"
 #include "materials/diffuse_transmission.h"
 #include "materials/metal_rough_bsdf.h"
+#include "materials/thin_dielectric.h"
 
 namespace penumbra {
 
@@ -25,7 +28,8 @@ struct DiffuseTransmissionParams {
 class GltfDiffuseTransmissionBsdf final : public Bsdf {
 public:
     GltfDiffuseTransmissionBsdf(const MetalRoughParams& p, const DiffuseTransmissionParams& dt,
-                                float transmission, const DielectricParams& dielectric);
+                                float transmission, const DielectricParams& dielectric,
+                                bool thin_walled = false);
     Spectrum eval(Vec3 wo, Vec3 wi, Transport mode) const override;
     float pdf(Vec3 wo, Vec3 wi, Transport mode) const override;
     std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Vec2 u, Transport mode) const override;
@@ -45,7 +49,12 @@ private:
     MetalRoughBsdf m_metal;
     MetalRoughBsdf m_opaque;
     DiffuseTransmissionLobe m_dt;
-    DielectricBsdf m_glass;
+    // thin_walled (no KHR_materials_volume): a sheet that does not bend what it
+    // transmits, as in GltfTransmissionBsdf.
+    const Bsdf& glass() const {
+        return std::visit([](const auto& b) -> const Bsdf& { return b; }, m_glass);
+    }
+    std::variant<DielectricBsdf, ThinDielectricBsdf> m_glass;
 };
 
 }  // namespace penumbra

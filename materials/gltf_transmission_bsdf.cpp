@@ -12,19 +12,20 @@ MetalRoughParams GltfTransmissionBsdf::opaque_params(MetalRoughParams p, float t
 }
 
 GltfTransmissionBsdf::GltfTransmissionBsdf(const MetalRoughParams& p, float transmission,
-                                           const DielectricParams& dielectric)
+                                           const DielectricParams& dielectric, bool thin_walled)
     : m_weight(std::clamp((1 - p.metallic) * transmission, 0.0f, 1.0f)),
       m_opaque(opaque_params(p, std::clamp(transmission, 0.0f, 1.0f))),
-      m_dielectric(dielectric) {}
+      m_dielectric(thin_walled ? decltype(m_dielectric)(ThinDielectricBsdf(dielectric))
+                               : decltype(m_dielectric)(DielectricBsdf(dielectric))) {}
 
 Spectrum GltfTransmissionBsdf::eval(Vec3 wo, Vec3 wi, Transport mode) const {
-    Spectrum f = m_dielectric.eval(wo, wi, mode) * m_weight;
+    Spectrum f = dielectric().eval(wo, wi, mode) * m_weight;
     if (m_weight < 1) f += m_opaque.eval(wo, wi, mode) * (1 - m_weight);
     return f;
 }
 
 float GltfTransmissionBsdf::pdf(Vec3 wo, Vec3 wi, Transport mode) const {
-    float p = m_dielectric.pdf(wo, wi, mode) * m_weight;
+    float p = dielectric().pdf(wo, wi, mode) * m_weight;
     if (m_weight < 1) p += m_opaque.pdf(wo, wi, mode) * (1 - m_weight);
     return p;
 }
@@ -32,11 +33,11 @@ float GltfTransmissionBsdf::pdf(Vec3 wo, Vec3 wi, Transport mode) const {
 std::optional<BsdfSample> GltfTransmissionBsdf::sample(Vec3 wo, float u_lobe, Vec2 u,
                                                        Transport mode) const {
     // Choose a component with probability equal to its weight, reusing u_lobe inside it.
-    const bool dielectric = u_lobe < m_weight;
-    const float weight = dielectric ? m_weight : 1 - m_weight;
+    const bool pick_dielectric = u_lobe < m_weight;
+    const float weight = pick_dielectric ? m_weight : 1 - m_weight;
     const float u_inner = std::min(
-        dielectric ? u_lobe / m_weight : (u_lobe - m_weight) / (1 - m_weight), 0x1.fffffep-1f);
-    std::optional<BsdfSample> s = dielectric ? m_dielectric.sample(wo, u_inner, u, mode)
+        pick_dielectric ? u_lobe / m_weight : (u_lobe - m_weight) / (1 - m_weight), 0x1.fffffep-1f);
+    std::optional<BsdfSample> s = pick_dielectric ? dielectric().sample(wo, u_inner, u, mode)
                                              : m_opaque.sample(wo, u_inner, u, mode);
     if (!s) return std::nullopt;
     if (s->is_specular()) {

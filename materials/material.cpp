@@ -4,7 +4,9 @@
 #include <cmath>
 #include <type_traits>
 
+#include "core/media/medium_set.h"
 #include "core/scene/emission.h"
+#include "materials/dispersion.h"
 #include "materials/fresnel.h"
 
 namespace penumbra {
@@ -88,7 +90,7 @@ bool scene_has_alpha(const Scene& scene) {
 }
 
 ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
-                  const MaterialOptions& options) {
+                  const MaterialOptions& options, const PathVolume& path) {
     const MaterialDesc& m = scene.material(sp.material);
     ShadingData sd;
 
@@ -189,9 +191,14 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     // Fresnel instead of Schlick) whose refracted light takes the base colour; the
     // specular extension scales its reflection as it scales glTF's f0 and f90. The
     // frame faces wo, so the far side has IOR ior when wo is outside, 1/ior inside.
+    // Without KHR_materials_volume the surface is a thin sheet with IOR 1 on both sides;
+    // dispersion (which needs a volume) refracts at the path's channel's IOR, and the
+    // path's media give the IOR ratio at nested volumes.
     DielectricParams d;
-    const float ior = m.ior > 0 ? m.ior : 1.5f;
-    d.eta = sd.front_face ? ior : 1 / ior;
+    const bool volume = material_has_volume(m);
+    const float ior = dispersion_ior(m.ior > 0 ? m.ior : 1.5f, volume ? m.dispersion : 0,
+                                     path.dispersion_channel);
+    d.eta = volume && path.eta > 0 ? path.eta : sd.front_face || !volume ? ior : 1 / ior;
     d.alpha = p.alpha;
     d.distribution = options.gltf_distribution;
     d.reflectance = min(specular_color, Spectrum(1)) * specular;
@@ -201,7 +208,7 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
         if (opaque) {
             sd.bsdf.emplace(MetalRoughBsdf(p));
         } else {
-            sd.bsdf.emplace(GltfTransmissionBsdf(p, transmission, d));
+            sd.bsdf.emplace(GltfTransmissionBsdf(p, transmission, d, !volume));
         }
         return sd;
     }
@@ -213,9 +220,9 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
         dt.color = dt.color * sample_texture(scene, m.diffuse_transmission_color_texture, sp).xyz();
     dt.color = clamp01(dt.color);
     const GltfBsdf::Core core =
-        dt.factor > 0 ? GltfBsdf::Core(GltfDiffuseTransmissionBsdf(p, dt, transmission, d))
+        dt.factor > 0 ? GltfBsdf::Core(GltfDiffuseTransmissionBsdf(p, dt, transmission, d, !volume))
         : opaque      ? GltfBsdf::Core(MetalRoughBsdf(p))
-                      : GltfBsdf::Core(GltfTransmissionBsdf(p, transmission, d));
+                      : GltfBsdf::Core(GltfTransmissionBsdf(p, transmission, d, !volume));
 
     std::optional<SheenLobe> sheen;
     if (max_component(sheen_color) > 0) {

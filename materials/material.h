@@ -52,6 +52,16 @@ struct MaterialOptions {
     GltfLayering gltf_layering = GltfLayering::AlbedoScaled;
 };
 
+// What a path knows about the volumes around a hit (integrators/path_media.h).
+struct PathVolume {
+    // The RGB channel (0-2) whose IOR dispersive volumes refract at (materials/
+    // dispersion.h); -1: the material's own IOR.
+    int dispersion_channel = -1;
+    // For a material with a volume: the IOR beyond the surface over the IOR on wo's side,
+    // from the media the path is in (liquid in glass); 0: the material against IOR 1.
+    float eta = 0;
+};
+
 // wo: unit world direction towards the viewer (-ray.d). Materials with a clearcoat,
 // sheen or diffuse transmission become a GltfBsdf; the rest keep the plain models.
 // KHR_materials_unlit: the base colour is emitted and the BSDF is black, so paths end
@@ -60,7 +70,7 @@ struct MaterialOptions {
 // materials visible to camera rays only (emission mixed with transparency by the
 // "Is Camera Ray" light path output).
 ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
-                  const MaterialOptions& options = {});
+                  const MaterialOptions& options = {}, const PathVolume& path = {});
 
 // Coverage of the surface at sp from glTF's alphaMode: OPAQUE is 1, MASK is 0 or 1 by
 // alphaCutoff, BLEND is the alpha itself (rendered as stochastic transparency).

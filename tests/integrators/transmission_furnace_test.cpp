@@ -1,8 +1,10 @@
 // The path tracer through refracting materials, under a uniform environment and no
-// other light: a smooth, white, fully transmissive glTF sphere is lossless, so it must
-// vanish into the background (radiance 1 everywhere: the 1/eta^2 on the way in and the
-// eta^2 on the way out cancel, and Russian roulette must not mistake them for loss).
-// Rough glass and Beckmann glTF spheres may only lose energy.
+// other light: a smooth, white, fully transmissive glTF sphere with a clear volume
+// (KHR_materials_volume, infinite attenuation distance) is lossless, so it must vanish
+// into the background (radiance 1 everywhere: the 1/eta^2 on the way in and the eta^2
+// on the way out cancel, and Russian roulette must not mistake them for loss); so must a
+// thin-walled one (no volume: sheets that do not bend). Rough glass and Beckmann glTF
+// spheres may only lose energy, and so may absorbing glass.
 #include <gtest/gtest.h>
 
 #include "core/accel/embree_accel.h"
@@ -58,13 +60,15 @@ SphereStats render_sphere(const MaterialDesc& m, MicrofacetType type, int spp) {
     return s;
 }
 
-MaterialDesc glass(float roughness) {
+// A solid glass sphere: a closed volume whose medium is clear unless attenuated.
+MaterialDesc glass(float roughness, bool volume = true) {
     MaterialDesc m;
     m.base_color = {1, 1, 1, 1};
     m.metallic = 0;
     m.roughness = roughness;
     m.ior = 1.5f;
     m.transmission = 1;
+    m.thickness = volume ? 1.0f : 0.0f;
     return m;
 }
 
@@ -73,11 +77,35 @@ TEST(TransmissionFurnace, SmoothGlassSphereVanishes) {
     EXPECT_NEAR(s.mean, 1.0, 4 * s.se + 2e-3) << "+- " << s.se;
 }
 
+TEST(TransmissionFurnace, SmoothThinWalledSphereVanishes) {
+    const SphereStats s = render_sphere(glass(0, false), MicrofacetType::Ggx, 64);
+    EXPECT_NEAR(s.mean, 1.0, 4 * s.se + 2e-3) << "+- " << s.se;
+}
+
+TEST(TransmissionFurnace, AbsorbingGlassLosesEnergyAndInfiniteDistanceLosesNone) {
+    MaterialDesc tinted = glass(0);
+    tinted.attenuation_color = {0.5f, 0.5f, 0.5f};
+    // The spec's default distance: the colour does nothing.
+    const SphereStats clear = render_sphere(tinted, MicrofacetType::Ggx, 16);
+    const SphereStats plain = render_sphere(glass(0), MicrofacetType::Ggx, 16);
+    EXPECT_EQ(clear.mean, plain.mean);
+    EXPECT_EQ(clear.se, plain.se);
+    // Half the light left per unit radius: the central chord (2) keeps a quarter, and
+    // paths that reflect inside lose more; the Fresnel-reflected rim keeps most.
+    tinted.attenuation_distance = 1;
+    const SphereStats absorbing = render_sphere(tinted, MicrofacetType::Ggx, 16);
+    EXPECT_LT(absorbing.mean, 0.6);
+    EXPECT_GT(absorbing.mean, 0.2);
+}
+
 TEST(TransmissionFurnace, RoughGlassAndBeckmannOnlyLoseEnergy) {
     for (MicrofacetType type : {MicrofacetType::Ggx, MicrofacetType::Beckmann}) {
         const SphereStats rough = render_sphere(glass(0.5f), type, 16);
         EXPECT_LE(rough.mean, 1 + 4 * rough.se) << "rough glass, type " << int(type);
         EXPECT_GT(rough.mean, 0.5);
+        const SphereStats thin = render_sphere(glass(0.5f, false), type, 16);
+        EXPECT_LE(thin.mean, 1 + 4 * thin.se) << "rough thin-walled, type " << int(type);
+        EXPECT_GT(thin.mean, 0.5);
         MaterialDesc metal;
         metal.base_color = {1, 1, 1, 1};
         metal.metallic = 1;

@@ -1,7 +1,8 @@
 // The glTF material with KHR_materials_transmission: a mixture of the opaque glTF BRDF
 // and a rough dielectric. Sampling against the pdf over the whole sphere (rough and
 // smooth, where the dielectric's Dirac lobes leave the rest of the pdf integrating to
-// the probability of the non-specular part), eval/pdf agreement, and the furnace.
+// the probability of the non-specular part), eval/pdf agreement, and the furnace; for
+// the refracting boundary of a volume and for the thin-walled sheet.
 #include "materials/gltf_transmission_bsdf.h"
 
 #include <gtest/gtest.h>
@@ -16,7 +17,8 @@ namespace {
 using test::spherical_direction;
 
 GltfTransmissionBsdf make(float roughness, float metallic, float transmission, Spectrum base,
-                          MicrofacetType type = MicrofacetType::Ggx, bool front = true) {
+                          MicrofacetType type = MicrofacetType::Ggx, bool front = true,
+                          bool thin = false) {
     MetalRoughParams p;
     p.base_color = base;
     p.metallic = metallic;
@@ -27,7 +29,8 @@ GltfTransmissionBsdf make(float roughness, float metallic, float transmission, S
     d.alpha = p.alpha;
     d.distribution = type;
     d.transmittance = base;
-    return GltfTransmissionBsdf(p, transmission, d);
+    if (thin) d.eta = 1.5f;  // a sheet: the same medium on both sides
+    return GltfTransmissionBsdf(p, transmission, d, thin);
 }
 
 std::string describe(float roughness, float metallic, float transmission, Vec3 wo) {
@@ -110,6 +113,48 @@ TEST(GltfTransmissionBsdf, WhiteFurnace) {
     const test::AlbedoEstimate glass = test::directional_albedo(
         make(0, 0, 1, Spectrum(1)), spherical_direction(0.6f, 0), 10000, 16, Transport::Importance);
     EXPECT_NEAR(glass.mean.x, 1.0f, 1e-5f);
+}
+
+TEST(GltfTransmissionBsdf, ThinWalledSamplesFollowThePdfAndConserveEnergy) {
+    // Without KHR_materials_volume the dielectric is a ThinDielectricBsdf sheet: the same
+    // mixture, sampled against its pdf over the sphere, agreeing with eval, never
+    // gaining energy, and lossless when smooth, white and fully transmissive.
+    struct Case {
+        float roughness, metallic, transmission, cos_o;
+    };
+    const Case cases[] = {{0.5f, 0.0f, 1.0f, 0.8f}, {0.3f, 0.3f, 0.6f, 0.05f},
+                          {1.0f, 0.0f, 0.5f, -0.4f}, {0.0f, 0.2f, 0.7f, 0.6f}};
+    test::BsdfChi2Options o;
+    o.samples = 100000;
+    o.significance = test::sidak_significance(0.01, std::size(cases));
+    int seed = 700;
+    for (const Case& c : cases) {
+        const GltfTransmissionBsdf bsdf = make(c.roughness, c.metallic, c.transmission,
+                                               {0.9f, 0.7f, 0.4f}, MicrofacetType::Ggx, true, true);
+        const Vec3 wo = spherical_direction(c.cos_o, 1.4f);
+        o.seed = ++seed;
+        const test::Chi2Result r = test::bsdf_chi2_sphere(bsdf, wo, o);
+        const std::string what = describe(c.roughness, c.metallic, c.transmission, wo) + ", thin";
+        EXPECT_TRUE(r.passed) << what << "\n" << r.report;
+        const double lost = double(r.lost) / r.samples;
+        EXPECT_NEAR(r.pdf_integral, 1 - lost, 5 * std::sqrt(lost / r.samples) + 2e-4) << what;
+        EXPECT_EQ(test::check_sample_agreement(bsdf, wo, 200, seed, Transport::Radiance), "")
+            << what;
+    }
+    for (float roughness : {0.0f, 0.3f, 1.0f})
+        for (float cos_o : {1.0f, 0.4f, 0.05f, -0.6f}) {
+            const GltfTransmissionBsdf bsdf =
+                make(roughness, 0.5f, 1.0f, Spectrum(1), MicrofacetType::Ggx, true, true);
+            const Vec3 wo = spherical_direction(cos_o, 0.7f);
+            const test::AlbedoEstimate a =
+                test::directional_albedo(bsdf, wo, 20000, 15, Transport::Importance);
+            EXPECT_LE(a.mean.x, 1 + 3 * a.std_error.x + 1e-5f)
+                << describe(roughness, 0.5f, 1, wo) << ", thin: " << a.mean.x;
+        }
+    const test::AlbedoEstimate sheet =
+        test::directional_albedo(make(0, 0, 1, Spectrum(1), MicrofacetType::Ggx, true, true),
+                                 spherical_direction(0.6f, 0), 10000, 16, Transport::Radiance);
+    EXPECT_NEAR(sheet.mean.x, 1.0f, 1e-5f);
 }
 
 TEST(GltfTransmissionBsdf, NoTransmissionIsTheOpaqueMaterial) {

@@ -1,5 +1,6 @@
 // shade(): glTF materials to BSDFs. Metallic 0 with specular 0 is exactly Lambertian,
-// transmission refracts with ior from the front and 1/ior from the back, the Beckmann
+// transmission refracts with ior from the front and 1/ior from the back (with a volume;
+// without one it is a thin sheet that does not bend), the Beckmann
 // option replaces GGX, and KHR_texture_transform moves every texture lookup.
 #include "materials/material.h"
 
@@ -65,6 +66,7 @@ TEST(Shade, TransmissionRefractsByTheSideOfArrival) {
     m.roughness = 0;
     m.ior = 1.5f;
     m.transmission = 1;
+    m.thickness = 1;  // KHR_materials_volume: a solid object, not a thin sheet
     const Scene scene = scene_with(m);
     for (bool front : {true, false}) {
         // From the back, wo is below the geometric normal; the frame flips to face it.
@@ -88,6 +90,27 @@ TEST(Shade, TransmissionRefractsByTheSideOfArrival) {
         // The path integrator's side test accepts it: the flipped frame and flipped
         // geometric normal agree on which side wi is.
         EXPECT_EQ(s->wi.z > 0, dot(wi_world, sd.ng) > 0);
+    }
+}
+
+TEST(Shade, ThinWalledTransmissionDoesNotBend) {
+    // Without KHR_materials_volume: a sheet with IOR 1 on both sides (materials/
+    // thin_dielectric.h), straight through from either side.
+    MaterialDesc m;
+    m.base_color = {1, 1, 1, 1};
+    m.metallic = 0;
+    m.roughness = 0;
+    m.ior = 1.5f;
+    m.transmission = 1;
+    const Scene scene = scene_with(m);
+    for (bool front : {true, false}) {
+        const Vec3 wo_world = normalize(Vec3(0.5f, 0.1f, front ? 0.7f : -0.7f));
+        const ShadingData sd = shade(scene, flat_point(0), wo_world);
+        const Vec3 wo = sd.frame.to_local(wo_world);
+        const auto s = sd.bsdf.get()->sample(wo, 0.999f, {0.5f, 0.5f}, Transport::Radiance);
+        ASSERT_TRUE(s);
+        EXPECT_EQ(s->eta, 1.0f);
+        EXPECT_NEAR(length(sd.frame.to_world(s->wi) + wo_world), 0.0f, 1e-6f);
     }
 }
 

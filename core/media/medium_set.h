@@ -1,0 +1,38 @@
+// The scene's media, built once before rendering: the interior medium of every material
+// with KHR_materials_volume (thickness > 0). Materials are looked up by index.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "core/media/medium.h"
+#include "core/scene/scene.h"
+
+namespace penumbra {
+
+class MediumSet {
+public:
+    MediumSet() = default;
+    explicit MediumSet(const Scene& scene);
+
+    // Whether material's meshes enclose a volume (a refracting boundary with a medium
+    // inside) rather than thin-walled sheets. The glTF default material (-1) does not.
+    bool has_volume(int material) const {
+        return material >= 0 && material < int(m_media.size()) && m_media[material];
+    }
+    // The medium inside material's meshes; null when it has no volume. Clear volumes
+    // (attenuationDistance infinite) have a medium too, whose is_clear() is true.
+    const Medium* interior(int material) const {
+        return has_volume(material) ? m_media[material].get() : nullptr;
+    }
+
+private:
+    std::vector<std::shared_ptr<const Medium>> m_media;  // per material; null: thin-walled
+};
+
+// KHR_materials_volume's switch: thicknessFactor > 0 makes the mesh a closed volume; 0
+// (the default, and any material without the extension) is thin-walled. The thickness
+// value and texture are the raster approximation's and play no part in tracing.
+bool material_has_volume(const MaterialDesc& m);
+
+}  // namespace penumbra
