@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "core/sampling/warp.h"
-#include "core/scene/motion.h"
 #include "core/scene/emission.h"
+#include "core/scene/motion.h"
 
 namespace penumbra {
 

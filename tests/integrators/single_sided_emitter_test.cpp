@@ -44,10 +44,10 @@ std::unique_ptr<Setup> floor_and_emitter(bool double_sided, const Transform& xf)
                                              {-20, 0, -20}, floor),
                        Transform());
     const float h = kSide / 2;
-    test::add_instance(s->scene,
-                       test::add_quad_object(s->scene, {-h, 0, -h}, {-h, 0, h}, {h, 0, h},
-                                             {h, 0, -h}, emitter),
-                       xf);
+    test::add_instance(
+        s->scene,
+        test::add_quad_object(s->scene, {-h, 0, -h}, {-h, 0, h}, {h, 0, h}, {h, 0, -h}, emitter),
+        xf);
     s->accel = std::make_unique<EmbreeAccel>(s->scene);
     s->lights = std::make_unique<LightSet>(s->scene, nullptr);
     return s;
@@ -68,8 +68,8 @@ std::vector<Config> configs() {
         o.strategy = strategy;
         c.push_back({name, "path", o});
     }
-    for (auto [name, nl, nb] : {std::tuple{"direct 1+1", 1, 1}, {"direct 4+0", 4, 0},
-                                {"direct 0+4", 0, 4}}) {
+    for (auto [name, nl, nb] :
+         {std::tuple{"direct 1+1", 1, 1}, {"direct 4+0", 4, 0}, {"direct 0+4", 0, 4}}) {
         IntegratorOptions o;
         o.light_samples = nl;
         o.bsdf_samples = nb;
@@ -112,8 +112,7 @@ const Transform kFacingUp = Transform::translate({0, kHeight, 0});
 const Transform kMirroredDown =
     Transform::translate({0, kHeight, 0}) * Transform::scale({1, -1, 1});
 // Mirrored within its plane: the world winding faces down, glTF's front face up.
-const Transform kMirroredUp =
-    Transform::translate({0, kHeight, 0}) * Transform::scale({-1, 1, 1});
+const Transform kMirroredUp = Transform::translate({0, kHeight, 0}) * Transform::scale({-1, 1, 1});
 
 TEST(SingleSidedEmitter, FacingTheFloorGivesTheAnalyticIrradiance) {
     const double expected = kAlbedo / kPi * square_irradiance(kLe, kSide, kHeight);

@@ -41,8 +41,7 @@ int sample_count(const TriangleLight& light, Vec3 ref, float time, int n = 64) {
     int count = 0;
     Rng rng(11);
     for (int i = 0; i < n; ++i)
-        if (light.sample_Li({ref, {0, 1, 0}}, {rng.next_float(), rng.next_float()}, time))
-            ++count;
+        if (light.sample_Li({ref, {0, 1, 0}}, {rng.next_float(), rng.next_float()}, time)) ++count;
     return count;
 }
 
@@ -89,8 +88,8 @@ void expect_sides_agree(const Scene& scene, float time, Vec3 front, const char* 
             ray.d = Vec3(0, -1, 0);
             const SurfacePoint sp = make_surface_point(scene, ray, hit);
             // A ref on either side, 0.2 to 2 away, not too grazing.
-            const Vec3 d = normalize(Vec3(rng.next_float() - 0.5f, 0.5f + rng.next_float(),
-                                          rng.next_float() - 0.5f));
+            const Vec3 d = normalize(
+                Vec3(rng.next_float() - 0.5f, 0.5f + rng.next_float(), rng.next_float() - 0.5f));
             const Transform xf = instance_transform_at(scene.instances[0], time);
             const Vec3 n_world = normalize(xf.normal({0, 1, 0}));
             const Frame frame = Frame::from_normal(n_world);
