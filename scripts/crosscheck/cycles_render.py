@@ -3,7 +3,8 @@
 Run by Blender:  blender -b --factory-startup -P cycles_render.py -- SCENE.gltf OUT.exr SIZE SPP SEED DEPTH
 Materials are rebuilt from the glTF JSON so both renderers see the same models:
   metallic 0 and KHR_materials_specular factor 0 -> Diffuse BSDF (Lambertian),
-  emissive -> Emission with emissiveFactor * emissiveStrength,
+  emissive -> Emission with emissiveFactor * emissiveStrength, from the front face only
+    unless doubleSided (penumbra's rule, docs/conventions.md; Cycles' Emission is two-sided),
   metallic 1, roughness 0 -> sharp Glossy BSDF with the base colour.
 Clamping and the light threshold are off and every bounce limit is DEPTH, as penumbra's
 --max-depth, so the two estimate the same integral.
@@ -44,6 +45,12 @@ def rebuild(mat, desc):
         node = nodes.new("ShaderNodeEmission")
         node.inputs["Color"].default_value = list(emissive) + [1.0]
         node.inputs["Strength"].default_value = strength
+        if not desc.get("doubleSided", False):
+            # Back faces (Backfacing = 1) get the mix's empty second input: black.
+            mix = nodes.new("ShaderNodeMixShader")
+            links.new(nodes.new("ShaderNodeNewGeometry").outputs["Backfacing"], mix.inputs[0])
+            links.new(node.outputs[0], mix.inputs[1])
+            node = mix
     elif pbr.get("metallicFactor", 1.0) == 1.0 and pbr.get("roughnessFactor", 1.0) == 0.0:
         node = nodes.new("ShaderNodeBsdfGlossy")
         node.distribution = "SHARP"
