@@ -165,6 +165,18 @@ TEST(TriangleLight, MovingMirroredInstanceEmitsWhereItsFrontFaceIsAtTheRaysTime)
     EXPECT_NEAR(half.z, -1.0f, 1e-3f);
 }
 
+TEST(TriangleLight, DeformingMeshEmitsFromItsWindingAtTheRaysTime) {
+    // The quad folds over within the shutter (x -> -x): its winding, and with it the
+    // front face, turns from +Y to -Y at time 0.5, while the normals keep saying +Y.
+    Scene scene = quad_scene(false, Transform());
+    TriangleMesh& mesh = scene.meshes[0];
+    std::vector<Vec3> folded = mesh.positions;
+    for (Vec3& p : folded) p.x = -p.x;
+    mesh.motion_positions = {mesh.positions, folded};
+    expect_sides_agree(scene, 0.25f, {0, 1, 0}, "deforming, before the fold");
+    expect_sides_agree(scene, 0.75f, {0, -1, 0}, "deforming, after the fold");
+}
+
 TEST(TriangleLight, TwoSidedFromBehindAndMirroredFromTheFrontMatchTheirPdf) {
     // The back of a two-sided quad, and the front of a mirrored one whose world winding
     // faces away from the receiver: sample_Li follows pdf_Li there too.
