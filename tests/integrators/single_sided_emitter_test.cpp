@@ -1,13 +1,15 @@
-// A square emitter above a Lambertian floor, facing it or facing away, single- or
-// double-sided, placed directly or through a mirroring instance: every integrator and
-// light strategy sees the floor lit by the analytic irradiance or exactly black.
+// A square emitter above a Lambertian floor, facing it or away, single- or double-sided,
+// placed directly, through a mirroring instance or a mirrored glTF node: every integrator
+// and light strategy sees the floor lit by the analytic irradiance or exactly black.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/accel/embree_accel.h"
 #include "integrators/integrator.h"
+#include "io/gltf_loader.h"
 #include "support/estimate.h"
+#include "support/gltf_builder.h"
 #include "support/scene_builder.h"
 
 namespace penumbra {
@@ -146,6 +148,52 @@ TEST(SingleSidedEmitter, FacingAwayLeavesTheFloorBlack) {
             EXPECT_EQ(e.mean, 0.0) << name << ", " << c.name;
         }
     }
+}
+
+// The floor and the emitter (a counter-clockwise quad, radiance 1) in a glTF file whose
+// emitter node has the scale `scale`, at height kHeight.
+std::unique_ptr<Setup> gltf_floor_and_emitter(const test::ScratchDir& dir, const char* name,
+                                              const std::string& scale) {
+    test::GltfBuilder b;
+    const float h = kSide / 2;
+    b.add(std::vector<float>{-20, 0, 20, 20, 0, 20, 20, 0, -20, -20, 0, -20}, test::kFloat, "VEC3");
+    b.add(std::vector<float>{-h, 0, -h, -h, 0, h, h, 0, h, h, 0, -h}, test::kFloat, "VEC3");
+    b.add(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, test::kUShort, "SCALAR");
+    const std::string a = std::to_string(kAlbedo);
+    const std::string members = R"("extensionsUsed": ["KHR_materials_specular"],
+      "materials": [
+        {"pbrMetallicRoughness": {"baseColorFactor": [)" +
+                                a + "," + a + "," + a +
+                                R"(, 1], "metallicFactor": 0},
+         "extensions": {"KHR_materials_specular": {"specularFactor": 0}}},
+        {"pbrMetallicRoughness": {"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0},
+         "emissiveFactor": [1, 1, 1],
+         "extensions": {"KHR_materials_specular": {"specularFactor": 0}}}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 2, "material": 0}]},
+                 {"primitives": [{"attributes": {"POSITION": 1}, "indices": 2, "material": 1}]}],
+      "nodes": [{"mesh": 0}, {"mesh": 1, "translation": [0, 1, 0], "scale": )" +
+                                scale + R"(}],
+      "scenes": [{"nodes": [0, 1]}], "scene": 0)";
+    auto s = std::make_unique<Setup>();
+    s->scene = load_gltf(b.write(dir, name, members, test::BufferStorage::DataUri));
+    s->accel = std::make_unique<EmbreeAccel>(s->scene);
+    s->lights = std::make_unique<LightSet>(s->scene, nullptr);
+    return s;
+}
+
+TEST(SingleSidedEmitter, GltfNodeWithNegativeDeterminantFlipsTheFrontFace) {
+    // glTF 2.0, 3.7.2.1: under a negative determinant the clockwise face is the front.
+    ASSERT_EQ(kHeight, 1.0f);  // the file's translation
+    const test::ScratchDir dir;
+    const double lit = kAlbedo / kPi * square_irradiance(1, kSide, kHeight);
+    const Config path_mis = configs()[0];
+    const auto through_plane = gltf_floor_and_emitter(dir, "down.gltf", "[1, -1, 1]");
+    const test::Estimate e = floor_radiance(*through_plane, path_mis, 60000);
+    EXPECT_TRUE(test::within(e, lit)) << e.mean << " +- " << e.std_error << ", expected " << lit;
+    const auto in_plane = gltf_floor_and_emitter(dir, "up.gltf", "[-1, 1, 1]");
+    EXPECT_EQ(floor_radiance(*in_plane, path_mis, 2000).mean, 0.0);
+    const auto unmirrored = gltf_floor_and_emitter(dir, "plain.gltf", "[1, 1, 1]");
+    EXPECT_EQ(floor_radiance(*unmirrored, path_mis, 2000).mean, 0.0);
 }
 
 TEST(SingleSidedEmitter, SeenFromBehindItIsBlackFromTheFrontItIsLe) {
