@@ -6,8 +6,8 @@ Materials are rebuilt from the glTF JSON so both renderers see the same models:
   emissive -> Emission with emissiveFactor * emissiveStrength, from the front face only
     unless doubleSided (penumbra's rule, docs/conventions.md; Cycles' Emission is two-sided),
   metallic 1, roughness 0 -> sharp Glossy BSDF with the base colour.
-Clamping and the light threshold are off and every bounce limit is DEPTH, as penumbra's
---max-depth, so the two estimate the same integral.
+Clamping and the light threshold are off and every bounce limit is DEPTH - 1, the same
+longest paths as penumbra's --max-depth DEPTH, so the two estimate the same integral.
 """
 import json
 import sys
@@ -81,10 +81,15 @@ scene.cycles.use_adaptive_sampling = False
 scene.cycles.sample_clamp_direct = 0
 scene.cycles.sample_clamp_indirect = 0
 scene.cycles.light_sampling_threshold = 0
-scene.cycles.max_bounces = depth
-scene.cycles.diffuse_bounces = depth
-scene.cycles.glossy_bounces = depth
-scene.cycles.transmission_bounces = depth
+# penumbra's --max-depth N ends a path after N scattering events, so its longest paths
+# have N - 1 indirect bounces; Cycles' bounce limits count indirect bounces (0: direct
+# light only). Measured: penumbra at depth 1 leaves the ceiling black (lit only
+# indirectly), Cycles at 1 does not; penumbra at 2 matches Cycles at 1.
+bounces = max(depth - 1, 0)
+scene.cycles.max_bounces = bounces
+scene.cycles.diffuse_bounces = bounces
+scene.cycles.glossy_bounces = bounces
+scene.cycles.transmission_bounces = bounces
 scene.cycles.caustics_reflective = True
 scene.cycles.caustics_refractive = True
 scene.cycles.blur_glossy = 0
