@@ -81,7 +81,10 @@ SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& h
     sp.ns = ns;
     // The winding defines ng, but files are not always consistent with their normals:
     // trust the shading normals for which side is "outside".
-    if (dot(sp.ng, sp.ns) < 0) sp.ng = -sp.ng;
+    if (dot(sp.ng, sp.ns) < 0) {
+        sp.ng = -sp.ng;
+        sp.ng_is_front = false;
+    }
 
     if (!mesh.uv0.empty()) {
         const Vec2 t0 = mesh.uv0[i0], t1 = mesh.uv0[i1], t2 = mesh.uv0[i2];

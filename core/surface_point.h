@@ -20,6 +20,10 @@ struct SurfacePoint {
     // secondary rays must start from the surface.
     Vec3 p_error;
     Vec3 ng;       // unit geometric normal (from the triangle's winding, as transformed)
+    // ng points out of the glTF front face (counter-clockwise winding, clockwise under a
+    // mirroring transform; glTF 2.0, 3.7.2.1); false where the shading normals turned ng
+    // over. Single-sided emitters emit on the front side only (front_normal).
+    bool ng_is_front = true;
     Vec3 ns;       // unit interpolated shading normal, on the same side as ng
     Vec3 dpdu;     // world tangent along texture u (zero when the mesh has no UVs)
     Vec4 tangent;  // world tangent from the mesh (w = bitangent sign); w = 0 when absent
@@ -59,5 +63,8 @@ Ray spawn_ray(const SurfacePoint& sp, Vec3 w, float dist, float time);
 inline Vec3 side_normal(const SurfacePoint& sp, Vec3 n_side) {
     return dot(sp.ns, n_side) < 0 ? -sp.ns : sp.ns;
 }
+
+// The unit geometric normal on the glTF front side of the triangle (see ng_is_front).
+inline Vec3 front_normal(const SurfacePoint& sp) { return sp.ng_is_front ? sp.ng : -sp.ng; }
 
 }  // namespace penumbra

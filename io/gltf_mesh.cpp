@@ -148,6 +148,29 @@ std::vector<Vec3> to_vec3(const std::vector<float>& v) {
     return out;
 }
 
+// A single-sided emitter emits from its front (counter-clockwise) face only, as glTF
+// defines the front (docs/conventions.md); vertex normals pointing the other way on most
+// of its triangles usually mean the file's winding is reversed, so say so, once.
+void check_emitter_winding(const GltfContext& ctx, int material, const TriangleMesh& mesh) {
+    if (material < 0 || mesh.normals.empty()) return;
+    const tinygltf::Material& m = ctx.model.materials[size_t(material)];
+    const std::vector<double>& e = m.emissiveFactor;
+    if (m.doubleSided || e.size() < 3 || !(e[0] > 0 || e[1] > 0 || e[2] > 0)) return;
+    size_t against = 0;
+    const size_t triangles = mesh.indices.size() / 3;
+    for (size_t t = 0; t < triangles; ++t) {
+        const uint32_t* i = &mesh.indices[3 * t];
+        const Vec3 winding = cross(mesh.positions[i[1]] - mesh.positions[i[0]],
+                                   mesh.positions[i[2]] - mesh.positions[i[0]]);
+        if (dot(winding, mesh.normals[i[0]] + mesh.normals[i[1]] + mesh.normals[i[2]]) < 0)
+            ++against;
+    }
+    if (2 * against > triangles)
+        ctx.warn_once("meshes", "single-sided emitters whose normals point to their back "
+                                "faces emit from the front (counter-clockwise) face only; "
+                                "set doubleSided to emit from both");
+}
+
 // One triangle primitive; false when it has no triangles to render (skipped, with a
 // warning).
 bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, const std::string& el,
@@ -227,6 +250,7 @@ bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, co
         ctx.warn(el, "has no triangles; skipped");
         return false;
     }
+    check_emitter_winding(ctx, prim.material, mesh);
     if (mesh.normals.empty()) {
         // Skins and morph targets address the file's vertices, which make_flat splits.
         if (!prim.targets.empty() || prim.attributes.count("JOINTS_0"))

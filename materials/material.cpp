@@ -138,7 +138,9 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     metallic = std::clamp(metallic, 0.0f, 1.0f);
     roughness = std::clamp(roughness, 0.0f, 1.0f);
 
-    sd.emission = emitted_radiance(scene, m, sp.uv0, sp.uv1);
+    // Single-sided emitters (doubleSided false) emit from the glTF front face only.
+    if (emits_towards(m, front_normal(sp), wo))
+        sd.emission = emitted_radiance(scene, m, sp.uv0, sp.uv1);
 
     float transmission = m.transmission;
     if (transmission > 0 && m.transmission_texture.valid())

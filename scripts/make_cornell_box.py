@@ -9,8 +9,15 @@ direct lighting has a closed form. One unit-cube mesh is instanced twice with di
 non-uniform scales and rotations (the two blocks); a smooth mirror sphere (metallic 1,
 roughness 0) sits on the short block.
 
+The panel is single-sided (doubleSided false, glTF's default): it emits downwards from
+its front face only, so the 1 mm gap above it stays dark, as in the classic scene.
+
 Run from the repository root:  python3 scripts/make_cornell_box.py
+A variant with the panel hung lower, for the cross-checks of single-sided emission:
+  python3 scripts/make_cornell_box.py --light-y 0.9 --out build/cornell-box-hung.gltf
+  (--double-sided makes its panel emit from both faces)
 """
+import argparse
 import json
 
 from gltf_builder import (Builder, buffers, merge, photometric, quad, unit_cube, uv_sphere,
@@ -30,7 +37,7 @@ def lambertian(name, color):
             "extensions": {"KHR_materials_specular": {"specularFactor": 0.0}}}
 
 
-def scene(point_light):
+def scene(point_light, light_y=0.999, double_sided=False):
     b = Builder()
     materials = [
         lambertian("white", WHITE),
@@ -40,7 +47,7 @@ def scene(point_light):
                                                     "metallicFactor": 1.0, "roughnessFactor": 0.0}},
         {"name": "light", "pbrMetallicRoughness": {"baseColorFactor": [0.0, 0.0, 0.0, 1.0],
                                                    "metallicFactor": 0.0},
-         "emissiveFactor": [1.0, 1.0, 1.0],
+         "emissiveFactor": [1.0, 1.0, 1.0], "doubleSided": double_sided,
          "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": PANEL_RADIANCE},
                         "KHR_materials_specular": {"specularFactor": 0.0}}},
     ]
@@ -52,7 +59,8 @@ def scene(point_light):
     ])
     red_wall = quad([[-1, -1, -1], [-1, 1, -1], [-1, 1, 1], [-1, -1, 1]], [1, 0, 0])
     green_wall = quad([[1, -1, -1], [1, -1, 1], [1, 1, 1], [1, 1, -1]], [-1, 0, 0])
-    y = 0.999
+    y = light_y
+    # Counter-clockwise seen from below: the front face looks down into the room.
     light_panel = quad([[-0.25, y, -0.2], [0.25, y, -0.2], [0.25, y, 0.2], [-0.25, y, 0.2]],
                        [0, -1, 0])
     meshes = [
@@ -102,11 +110,24 @@ def scene(point_light):
     return gltf
 
 
+def write(path, gltf):
+    with open(path, "w") as f:
+        json.dump(gltf, f, indent=1)
+        f.write("\n")
+
+
 def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--light-y", type=float, help="panel height (a variant; needs --out)")
+    ap.add_argument("--double-sided", action="store_true", help="the variant's panel emits both ways")
+    ap.add_argument("--out", help="where to write the variant")
+    args = ap.parse_args()
+    if args.out:
+        write(args.out, scene(False, args.light_y if args.light_y is not None else 0.999,
+                              args.double_sided))
+        return
     for name, point_light in (("cornell-box", False), ("cornell-box-point", True)):
-        with open("scenes/%s.gltf" % name, "w") as f:
-            json.dump(scene(point_light), f, indent=1)
-            f.write("\n")
+        write("scenes/%s.gltf" % name, scene(point_light))
 
 
 if __name__ == "__main__":

@@ -156,8 +156,10 @@ def lights_scene():
     zero_area = ([[0.0, 0.5, 0.0], [0.5, 0.5, 0.0], [1.0, 0.5, 0.0]], [[0.0, -1.0, 0.0]] * 3,
                  [0, 1, 2])
     s = 1e-4  # a 1e-4 m triangle of 1e8 nits: tiny and very bright
+    # Wound counter-clockwise seen from below, as its normals say: a single-sided emitter
+    # lights the floor from its front face only.
     tiny = ([[-0.8, 0.6, 0.0], [-0.8 + s, 0.6, 0.0], [-0.8, 0.6, s]], [[0.0, -1.0, 0.0]] * 3,
-            [0, 2, 1])
+            [0, 1, 2])
     gltf = {
         "extensionsUsed": ["KHR_lights_punctual", "KHR_materials_specular",
                            "KHR_materials_emissive_strength"],

@@ -5,8 +5,9 @@
 # The subset, to keep CI well under its hour on 2 cores: every unit test in one process
 # (2-3 minutes), plus the core CLI suite (CliTest.*). The other end-to-end CLI suites
 # (*Cli.*, BundledScenes.*, BlenderLights.* with its 8 renders) start the instrumented
-# CLI several times per test, 3-11 s each; they run in the Release pass of scripts/test.sh. SANITIZE_FILTER replaces the
-# gtest filter ('*' for everything).
+# CLI several times per test, 3-11 s each; they run in the Release pass of scripts/test.sh, as do the *Long statistical
+# suites (ctest label "long"). SANITIZE_FILTER replaces the gtest filter ('*' for
+# everything).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir="${BUILD_DIR:-build/asan}"
@@ -18,7 +19,7 @@ cmake --build "$build_dir" --parallel "$(nproc)"
 # The same options as the asan test preset.
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:halt_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1}"
 source scripts/sanitizer_env.sh
-filter="${SANITIZE_FILTER:--*Cli.*:BundledScenes.*:BlenderLights.*}"
+filter="${SANITIZE_FILTER:--*Cli.*:BundledScenes.*:BlenderLights.*:*Long.*}"
 start=$(date +%s)
 "$build_dir/bin/penumbra_tests" --gtest_filter="$filter" --gtest_brief=1
 echo "sanitize: tests ($filter) passed under ASan+UBSan in $(( $(date +%s) - start )) s"

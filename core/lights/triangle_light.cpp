@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "core/sampling/warp.h"
-#include "core/scene/motion.h"
 #include "core/scene/emission.h"
+#include "core/scene/motion.h"
 
 namespace penumbra {
 
@@ -15,6 +15,7 @@ TriangleLight::TriangleLight(const Scene& scene, uint32_t instance, uint32_t mes
     const Instance& inst = scene.instances[instance];
     m_moving = !inst.motion.empty() || !mesh.motion_positions.empty();
     m_material = mesh.material;
+    m_two_sided = scene.material(m_material).double_sided;
     Vec3 p[3];
     for (int k = 0; k < 3; ++k) {
         const uint32_t i = mesh.indices[3 * prim + k];
@@ -22,19 +23,23 @@ TriangleLight::TriangleLight(const Scene& scene, uint32_t instance, uint32_t mes
         m_uv0[k] = mesh.uv0.empty() ? Vec2() : mesh.uv0[i];
         m_uv1[k] = mesh.uv1.empty() ? Vec2() : mesh.uv1[i];
     }
-    m_static = place(p[0], p[1], p[2]);
+    m_static = place(p[0], p[1], p[2], inst.to_world.swaps_handedness());
     m_area = m_static.area;
     // Power only chooses among lights: any positive estimate keeps sampling unbiased,
-    // so a moving triangle is weighed by its size at shutter open.
-    m_power = 2 * kPi * m_area * luminance(mean_Le);  // two-sided
+    // so a moving triangle is weighed by its size at shutter open. A Lambertian emitter
+    // sends pi A Le from each side it emits from.
+    m_power = (m_two_sided ? 2 : 1) * kPi * m_area * luminance(mean_Le);
 }
 
-TriangleLight::Placed TriangleLight::place(Vec3 p0, Vec3 p1, Vec3 p2) {
+TriangleLight::Placed TriangleLight::place(Vec3 p0, Vec3 p1, Vec3 p2, bool mirrored) {
     Placed t{{p0, p1, p2}, Vec3(0, 0, 1), 0};
+    // The world-space winding normal; a mirroring transform reverses the winding, and
+    // glTF's front face with it (glTF 2.0, 3.7.2.1). make_surface_point's inverse-
+    // transpose normal of the object-space winding gives the same side.
     const Vec3 c = cross(p1 - p0, p2 - p0);
     const float len = length(c);
     t.area = 0.5f * len;
-    if (len > 0) t.n = c / len;
+    if (len > 0) t.n = (mirrored ? -c : c) / len;
     return t;
 }
 
@@ -45,25 +50,23 @@ TriangleLight::Placed TriangleLight::placed(float time) const {
     Vec3 p[3];
     for (int k = 0; k < 3; ++k)
         p[k] = xf.point(position_at(mesh, mesh.indices[3 * m_prim + k], time));
-    return place(p[0], p[1], p[2]);
+    return place(p[0], p[1], p[2], xf.swaps_handedness());
 }
 
-namespace {
-
-// Area density 1/A to solid angle at ref: dist^2 / (|cos| A).
-float solid_angle_pdf(Vec3 ref, Vec3 p, Vec3 n, float area) {
+float TriangleLight::solid_angle_pdf(Vec3 ref, Vec3 p, const Placed& t) const {
+    // Area density 1/A to solid angle at ref: dist^2 / (|cos| A). Behind a single-sided
+    // triangle nothing is emitted towards ref, so sample_Li never goes there and the
+    // density of reaching it is 0, as the MIS weights of BSDF-found hits need.
     const Vec3 d = p - ref;
+    if (!emits_towards(m_scene->material(m_material), t.n, -d)) return 0;
     const float dist2 = length_squared(d);
-    const float cos_light = std::abs(dot(n, d)) / std::sqrt(dist2);
-    if (!(cos_light > 0) || !(area > 0)) return 0;
-    return dist2 / (cos_light * area);
+    const float cos_light = std::abs(dot(t.n, d)) / std::sqrt(dist2);
+    if (!(cos_light > 0) || !(t.area > 0)) return 0;
+    return dist2 / (cos_light * t.area);
 }
-
-}  // namespace
 
 float TriangleLight::pdf_at(Vec3 ref, Vec3 p, float time) const {
-    const Placed t = placed(time);
-    return solid_angle_pdf(ref, p, t.n, t.area);
+    return solid_angle_pdf(ref, p, placed(time));
 }
 
 std::optional<LightSample> TriangleLight::sample_Li(const ShadingPoint& ref, Vec2 u,
@@ -78,7 +81,7 @@ std::optional<LightSample> TriangleLight::sample_Li(const ShadingPoint& ref, Vec
     if (!(dist2 > 0)) return std::nullopt;
     const float dist = std::sqrt(dist2);
     const Vec3 wi = d / dist;
-    const float pdf = solid_angle_pdf(ref.p, p, t.n, t.area);
+    const float pdf = solid_angle_pdf(ref.p, p, t);
     if (!(pdf > 0) || !std::isfinite(pdf)) return std::nullopt;
     const Vec2 uv0 = m_uv0[0] * b0 + m_uv0[1] * b.x + m_uv0[2] * b.y;
     const Vec2 uv1 = m_uv1[0] * b0 + m_uv1[1] * b.x + m_uv1[2] * b.y;
@@ -102,7 +105,7 @@ float TriangleLight::pdf_Li(const ShadingPoint& ref, Vec3 wi, float time) const 
     if (b2 < 0 || b1 + b2 > 1) return 0;
     const float t = dot(e2, qv) / det;
     if (!(t > 0)) return 0;
-    return solid_angle_pdf(ref.p, ref.p + wi * t, tri.n, tri.area);
+    return solid_angle_pdf(ref.p, ref.p + wi * t, tri);
 }
 
 float TriangleLight::power() const { return m_power; }

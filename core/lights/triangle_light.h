@@ -1,6 +1,6 @@
 // An emissive triangle of one instance, in world space: an area light. Sampled
-// uniformly by area and converted to solid angle at the receiver. Emits from both sides
-// (glTF surfaces are thin sheets).
+// uniformly by area and converted to solid angle at the receiver. Emits from its glTF
+// front face only, or from both when the material is doubleSided (emits_towards).
 #pragma once
 
 #include "core/lights/light.h"
@@ -14,14 +14,18 @@ public:
     // once per material by the caller.
     TriangleLight(const Scene& scene, uint32_t instance, uint32_t mesh, uint32_t prim,
                   Spectrum mean_Le);
+    // Empty when ref is behind a single-sided triangle (or in its plane).
     std::optional<LightSample> sample_Li(const ShadingPoint& ref, Vec2 u,
                                          float time) const override;
-    // Finds where the ray (ref.p, wi) meets the triangle; 0 if it misses.
+    // Finds where the ray (ref.p, wi) meets the triangle; 0 if it misses or arrives
+    // from behind a single-sided triangle.
     float pdf_Li(const ShadingPoint& ref, Vec3 wi, float time) const override;
     // Solid-angle density of sampling point p of the triangle (where it is at time)
-    // from ref.
+    // from ref; 0 when ref is behind a single-sided triangle.
     float pdf_at(Vec3 ref, Vec3 p, float time) const;
+    // pi A luminance(Le) per emitting side, at shutter open.
     float power() const override;
+    bool two_sided() const { return m_two_sided; }
     bool is_delta() const override { return false; }
     std::string describe() const override { return "triangle"; }
     float area() const { return m_area; }  // at shutter open
@@ -33,15 +37,20 @@ private:
     // MIS densities of BSDF-sampled hits describe the same triangle.
     struct Placed {
         Vec3 p[3];
-        Vec3 n;  // unit geometric normal
+        Vec3 n;  // unit normal out of the glTF front face (as SurfacePoint's front_normal)
         float area;
     };
     Placed placed(float time) const;
-    static Placed place(Vec3 p0, Vec3 p1, Vec3 p2);
+    // mirrored: the transform swaps handedness, so the front face winds clockwise.
+    static Placed place(Vec3 p0, Vec3 p1, Vec3 p2, bool mirrored);
+    // Solid-angle density of area sampling at ref for point p of t; 0 from behind a
+    // single-sided triangle.
+    float solid_angle_pdf(Vec3 ref, Vec3 p, const Placed& t) const;
 
     const Scene* m_scene;
     uint32_t m_instance, m_mesh, m_prim;
     bool m_moving;
+    bool m_two_sided;
     int m_material;
     Placed m_static;  // at shutter open
     Vec2 m_uv0[3], m_uv1[3];

@@ -1,6 +1,6 @@
-// Emitted radiance of a glTF material at a surface point: emissiveFactor times
-// emissiveStrength times the emissive texture. One place, used by both the material at a
-// hit and the area lights that sample emissive triangles.
+// Emitted radiance of a glTF material at a surface point (emissiveFactor times
+// emissiveStrength times the emissive texture) and the faces it leaves. One place, used
+// by both the material at a hit and the area lights that sample emissive triangles.
 #pragma once
 
 #include "core/scene/scene.h"
@@ -8,6 +8,12 @@
 namespace penumbra {
 
 Spectrum emitted_radiance(const Scene& scene, const MaterialDesc& m, Vec2 uv0, Vec2 uv1);
+// Whether the material emits towards w from a surface whose glTF front face looks along
+// n_front: a single-sided material (doubleSided false, the default) emits from its front
+// only, a double-sided one from both faces. The one rule of the area lights and shade().
+inline bool emits_towards(const MaterialDesc& m, Vec3 n_front, Vec3 w) {
+    return m.double_sided || dot(n_front, w) > 0;
+}
 // Mean of the emissive texture's RGB over the image (1 without a texture): an estimate
 // of an emitter's power for light selection.
 Spectrum mean_emission_texture(const Scene& scene, const MaterialDesc& m);

@@ -3,10 +3,11 @@
 Run by Blender:  blender -b --factory-startup -P cycles_render.py -- SCENE.gltf OUT.exr SIZE SPP SEED DEPTH
 Materials are rebuilt from the glTF JSON so both renderers see the same models:
   metallic 0 and KHR_materials_specular factor 0 -> Diffuse BSDF (Lambertian),
-  emissive -> Emission with emissiveFactor * emissiveStrength,
+  emissive -> Emission with emissiveFactor * emissiveStrength, from the front face only
+    unless doubleSided (penumbra's rule, docs/conventions.md; Cycles' Emission is two-sided),
   metallic 1, roughness 0 -> sharp Glossy BSDF with the base colour.
-Clamping and the light threshold are off and every bounce limit is DEPTH, as penumbra's
---max-depth, so the two estimate the same integral.
+Clamping and the light threshold are off and every bounce limit is DEPTH - 1, the same
+longest paths as penumbra's --max-depth DEPTH, so the two estimate the same integral.
 """
 import json
 import sys
@@ -44,6 +45,12 @@ def rebuild(mat, desc):
         node = nodes.new("ShaderNodeEmission")
         node.inputs["Color"].default_value = list(emissive) + [1.0]
         node.inputs["Strength"].default_value = strength
+        if not desc.get("doubleSided", False):
+            # Back faces (Backfacing = 1) get the mix's empty second input: black.
+            mix = nodes.new("ShaderNodeMixShader")
+            links.new(nodes.new("ShaderNodeNewGeometry").outputs["Backfacing"], mix.inputs[0])
+            links.new(node.outputs[0], mix.inputs[1])
+            node = mix
     elif pbr.get("metallicFactor", 1.0) == 1.0 and pbr.get("roughnessFactor", 1.0) == 0.0:
         node = nodes.new("ShaderNodeBsdfGlossy")
         node.distribution = "SHARP"
@@ -74,10 +81,15 @@ scene.cycles.use_adaptive_sampling = False
 scene.cycles.sample_clamp_direct = 0
 scene.cycles.sample_clamp_indirect = 0
 scene.cycles.light_sampling_threshold = 0
-scene.cycles.max_bounces = depth
-scene.cycles.diffuse_bounces = depth
-scene.cycles.glossy_bounces = depth
-scene.cycles.transmission_bounces = depth
+# penumbra's --max-depth N ends a path after N scattering events, so its longest paths
+# have N - 1 indirect bounces; Cycles' bounce limits count indirect bounces (0: direct
+# light only). Measured: penumbra at depth 1 leaves the ceiling black (lit only
+# indirectly), Cycles at 1 does not; penumbra at 2 matches Cycles at 1.
+bounces = max(depth - 1, 0)
+scene.cycles.max_bounces = bounces
+scene.cycles.diffuse_bounces = bounces
+scene.cycles.glossy_bounces = bounces
+scene.cycles.transmission_bounces = bounces
 scene.cycles.caustics_reflective = True
 scene.cycles.caustics_refractive = True
 scene.cycles.blur_glossy = 0

@@ -29,6 +29,7 @@ std::unique_ptr<TestScene> furnace_box(float Le, float a) {
     m.metallic = 0;
     m.specular = 0;
     m.emissive = Spectrum(Le);
+    m.double_sided = true;  // the cube winds outwards: its back faces emit into the box
     s->scene.materials.push_back(m);
     const uint32_t cube = test::add_cube_object(s->scene, 0);
     test::add_instance(s->scene, cube, Transform::scale({2, 3, 4}));

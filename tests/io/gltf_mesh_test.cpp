@@ -204,5 +204,33 @@ TEST(GltfMesh, PointsAndLinesAreSkipped) {
     EXPECT_EQ(s.triangle_count(), 1u);  // 4 vertices as a list: one triangle, one left over
 }
 
+TEST(GltfMesh, SingleSidedEmitterWithNormalsAgainstItsWindingIsReported) {
+    // The quad winds counter-clockwise seen from +Z; its normals say -Z.
+    const std::vector<float> back_normals = {0, 0, -1, 0, 0, -1, 0, 0, -1, 0, 0, -1};
+    ScratchDir dir;
+    const auto warning_for = [&](const char* name, const std::string& material,
+                                 const std::vector<float>& normals) {
+        GltfBuilder b;
+        b.add(kQuad, test::kFloat, "VEC3");
+        b.add(normals, test::kFloat, "VEC3");
+        b.add(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, test::kUShort, "SCALAR");
+        const std::string members =
+            R"("materials": [)" + material + "]," +
+            test::one_mesh_scene(
+                R"({"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2, "material": 0})");
+        ::testing::internal::CaptureStderr();
+        load_gltf(b.write(dir, name, members, BufferStorage::DataUri));
+        return ::testing::internal::GetCapturedStderr().find(
+                   "single-sided emitters whose normals point to their back faces") !=
+               std::string::npos;
+    };
+    const std::string emitter = R"({"emissiveFactor": [1, 1, 1]})";
+    EXPECT_TRUE(warning_for("backwards.gltf", emitter, back_normals));
+    EXPECT_FALSE(warning_for("agreeing.gltf", emitter, kQuadNormals));
+    EXPECT_FALSE(warning_for("double.gltf", R"({"emissiveFactor": [1, 1, 1], "doubleSided": true})",
+                             back_normals));
+    EXPECT_FALSE(warning_for("dark.gltf", "{}", back_normals));
+}
+
 }  // namespace
 }  // namespace penumbra
