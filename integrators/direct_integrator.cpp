@@ -70,7 +70,8 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
             } else {
                 const SurfacePoint lp = make_surface_point(ctx.scene, r, *h);
                 const MaterialDesc& m = ctx.scene.material(lp.material);
-                if (!m.is_emissive()) continue;
+                // Unlit surfaces emit their base colour but are not light-sampled.
+                if (!m.is_emissive() && !m.unlit) continue;
                 Le = shade(ctx.scene, lp, -wi_world).emission;
                 const Light* light = ctx.lights.triangle_light(h->instance, h->mesh, h->prim);
                 w = emission_weight(ctx, light, sp.p, sd.ng, &lp.p, wi_world, ray.time, bs->pdf,
