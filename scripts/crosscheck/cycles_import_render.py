@@ -134,7 +134,9 @@ scene.cycles.use_adaptive_sampling = False
 scene.cycles.sample_clamp_direct = 0
 scene.cycles.sample_clamp_indirect = 0
 scene.cycles.light_sampling_threshold = 0
-depth = job["max_depth"]
+# penumbra's --max-depth N ends a path after N scattering events (N - 1 indirect
+# bounces); Cycles' limits count indirect bounces (as in cycles_render.py).
+depth = max(job["max_depth"] - 1, 0)
 for attr in ("max_bounces", "diffuse_bounces", "glossy_bounces", "transmission_bounces",
              "volume_bounces"):
     setattr(scene.cycles, attr, depth)
