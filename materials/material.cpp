@@ -6,6 +6,7 @@
 
 #include "core/scene/emission.h"
 #include "materials/fresnel.h"
+#include "materials/specular_inputs.h"
 
 namespace penumbra {
 
@@ -94,6 +95,8 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     ns = ns * side;
     sd.ng = ng;
     sd.frame = Frame::from_normal(ns);
+    // KHR_materials_anisotropy turns the frame's x to the anisotropy direction.
+    const float anisotropy = align_anisotropy_frame(scene, m, sp, sd.frame);
 
     Vec4 base = m.base_color * sp.color;
     if (m.base_color_texture.valid()) base = base * sample_texture(scene, m.base_color_texture, sp);
@@ -131,6 +134,8 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     p.dielectric_f90 = specular;
     p.distribution = options.gltf_distribution;
     p.layering = options.gltf_layering;
+    p.anisotropy = anisotropy;
+    set_iridescence(scene, m, sp, p);
     if (transmission == 0 || metallic == 1) {
         sd.bsdf.emplace(MetalRoughBsdf(p));
         return sd;
