@@ -17,6 +17,36 @@ MicrofacetDistribution make_distribution(const MetalRoughParams& p) {
     return {p.distribution, a.x, a.y};
 }
 
+// The film's terms live out of line (GCC attribute): films are rare, and inlined into
+// eval() they made the isotropic sample() about 4% slower.
+[[gnu::noinline]] Spectrum film_dielectric_fresnel(const MetalRoughParams& p, Spectrum film_f0,
+                                                   float c) {
+    // KHR_materials_iridescence: F = mix(F_schlick, F_iridescence, factor); the
+    // specular factor scales the film's reflection as it scales Schlick's.
+    const Spectrum fd = fresnel_schlick(p.dielectric_f0, p.dielectric_f90, c);
+    const Spectrum ff = thin_film_reflectance(p.film, film_f0, c) * p.dielectric_f90;
+    return fd + (ff - fd) * p.iridescence;
+}
+
+[[gnu::noinline]] Spectrum film_specular_fresnel(const MetalRoughParams& p, Spectrum film_f0,
+                                                 float c) {
+    Spectrum f = film_dielectric_fresnel(p, film_f0, c) * (1 - p.metallic);
+    if (p.metallic > 0) {
+        // The metal's film sits on base_color as its f0 (the spec's approximation).
+        const Spectrum fm = fresnel_schlick(p.base_color, 1, c);
+        const Spectrum ff = thin_film_reflectance(p.film, p.base_color, c);
+        f += (fm + (ff - fm) * p.iridescence) * p.metallic;
+    }
+    return f;
+}
+
+// The node at or below the smallest v.h seen from cos(theta) = mu (see the constructor).
+[[gnu::noinline]] float film_layer_f0(const float* bound, int nodes, float mu) {
+    const float sin_theta = std::sqrt(std::max(0.0f, 1 - mu * mu));
+    const float c_lo = std::sqrt(std::max(0.0f, 0.5f * (1 - sin_theta)));
+    return bound[std::clamp(static_cast<int>(c_lo * nodes), 0, nodes)];
+}
+
 bool is_delta(const MetalRoughParams& p) {
     if (!(p.alpha < MetalRoughBsdf::kDeltaAlpha)) return false;
     if (!(p.anisotropy > 0)) return true;
@@ -88,11 +118,7 @@ float MetalRoughBsdf::fresnel_transmittance(float mu) const {
 }
 
 float MetalRoughBsdf::layer_f0(float mu) const {
-    if (!m_film) return m_f0_max;
-    // The node at or below the smallest v.h seen from mu (see the constructor).
-    const float c_lo = std::sqrt(std::max(0.0f, 0.5f * (1 - std::sqrt(std::max(0.0f, 1 - mu * mu)))));
-    const int i = std::clamp(static_cast<int>(c_lo * kFilmNodes), 0, kFilmNodes);
-    return m_film_bound[i];
+    return m_film ? film_layer_f0(m_film_bound.data(), kFilmNodes, mu) : m_f0_max;
 }
 
 float MetalRoughBsdf::film_average_albedo() const {
@@ -126,25 +152,12 @@ float MetalRoughBsdf::base_transmittance(Vec3 w) const {
 }
 
 Spectrum MetalRoughBsdf::dielectric_fresnel(float c) const {
-    const Spectrum fd = fresnel_schlick(m_p.dielectric_f0, m_p.dielectric_f90, c);
-    if (!m_film) return fd;
-    // KHR_materials_iridescence: F = mix(F_schlick, F_iridescence, factor); the
-    // specular factor scales the film's reflection as it scales Schlick's.
-    const Spectrum ff = thin_film_reflectance(m_p.film, m_film_f0, c) * m_p.dielectric_f90;
-    return fd + (ff - fd) * m_p.iridescence;
+    if (m_film) return film_dielectric_fresnel(m_p, m_film_f0, c);
+    return fresnel_schlick(m_p.dielectric_f0, m_p.dielectric_f90, c);
 }
 
 Spectrum MetalRoughBsdf::specular_fresnel(float c) const {
-    if (m_film) {
-        Spectrum f = dielectric_fresnel(c) * (1 - m_p.metallic);
-        if (m_p.metallic > 0) {
-            // The metal's film sits on base_color as its f0 (the spec's approximation).
-            const Spectrum fm = fresnel_schlick(m_p.base_color, 1, c);
-            const Spectrum ff = thin_film_reflectance(m_p.film, m_p.base_color, c);
-            f += (fm + (ff - fm) * m_p.iridescence) * m_p.metallic;
-        }
-        return f;
-    }
+    if (m_film) return film_specular_fresnel(m_p, m_film_f0, c);
     const Spectrum fd = fresnel_schlick(m_p.dielectric_f0, m_p.dielectric_f90, c);
     const Spectrum fm = fresnel_schlick(m_p.base_color, 1, c);
     return fd * (1 - m_p.metallic) + fm * m_p.metallic;
