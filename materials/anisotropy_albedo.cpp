@@ -138,6 +138,23 @@ AnisotropicSpecularAlbedo::AnisotropicSpecularAlbedo(MicrofacetType type, float 
     m_average = a0 * (1 - m_fj) + a1 * m_fj;
 }
 
+int AnisotropicSpecularAlbedo::columns() { return Grid::kMus; }
+
+Vec2 AnisotropicSpecularAlbedo::azimuthal_average(int i) const {
+    // The trapezoid rule over the phi nodes, exact for the interpolant linear in phi.
+    Vec2 sum(0, 0);
+    for (int l = 0; l < Grid::kPhis; ++l) {
+        const float lo = l > 0 ? node_phi(l - 1) : node_phi(0);
+        const float hi = l + 1 < Grid::kPhis ? node_phi(l + 1) : node_phi(l);
+        const float w = 0.5f * (hi - lo) / (0.5f * kPi);
+        const auto node = [&](int j, int k) { return m_table->ab[j][k][l][i]; };
+        const Vec2 c0 = node(m_j, m_k) * (1 - m_fk) + node(m_j, m_k + 1) * m_fk;
+        const Vec2 c1 = node(m_j + 1, m_k) * (1 - m_fk) + node(m_j + 1, m_k + 1) * m_fk;
+        sum = sum + (c0 * (1 - m_fj) + c1 * m_fj) * w;
+    }
+    return sum;
+}
+
 Vec2 AnisotropicSpecularAlbedo::at(Vec3 w) const {
     const float mu = std::clamp(w.z, 0.0f, 1.0f);
     // Linear in mu (not in cbrt(mu)) and in phi between nodes: average() integrates

@@ -32,6 +32,11 @@ public:
     // The cosine-weighted hemispherical average (1/pi) int (A, B)(w) cos(theta) dw of
     // exactly the interpolant at() returns.
     Vec2 average() const { return m_average; }
+    // (A, B) averaged over the azimuth, (2/pi) int_0^{pi/2} d phi, at the table's column
+    // cos(theta) = (i / (columns() - 1))^3: at() is linear in cos(theta) between columns,
+    // so these are the exact nodes of the interpolant's azimuthal average.
+    static int columns();
+    Vec2 azimuthal_average(int column) const;
 
 private:
     const struct AnisotropyAlbedoTable* m_table = nullptr;

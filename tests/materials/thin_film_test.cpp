@@ -224,5 +224,23 @@ TEST(MetalRoughIridescence, WhiteFurnace) {
     EXPECT_LT(worst_loss, 0.24f);
 }
 
+TEST(MetalRoughIridescence, WhiteFurnaceAnisotropic) {
+    // A film over an anisotropic lobe: the base's average runs over the azimuth too.
+    for (float r : {0.0f, 0.3f, 0.8f})
+        for (float cos_o : {1.0f, 0.5f, 0.1f})
+            for (float phi : {0.0f, 1.5707964f}) {
+                MetalRoughParams p = film_params(r, 0, 1, 400);
+                p.anisotropy = 0.8f;
+                p.base_color = Spectrum(1);
+                const Vec3 wo = spherical_direction(cos_o, phi);
+                const test::AlbedoEstimate a =
+                    test::directional_albedo(MetalRoughBsdf(p), wo, 20000, 22);
+                // The anisotropic table's error (metal_rough_anisotropy_test.cpp) on top.
+                const float tol = 3 * max_component(a.std_error) + 1e-5f + 0.01f;
+                EXPECT_LE(max_component(a.mean), 1 + tol) << describe(p, wo);
+                EXPECT_GE(max_component(a.mean), 0.75f) << describe(p, wo);
+            }
+}
+
 }  // namespace
 }  // namespace penumbra
