@@ -8,6 +8,7 @@
 #include "core/scene/emission.h"
 #include "materials/dispersion.h"
 #include "materials/fresnel.h"
+#include "materials/specular_inputs.h"
 
 namespace penumbra {
 
@@ -102,6 +103,8 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     ns = ns * side;
     sd.ng = ng;
     sd.frame = Frame::from_normal(ns);
+    // KHR_materials_anisotropy turns the frame's x to the anisotropy direction.
+    const float anisotropy = align_anisotropy_frame(scene, m, sp, sd.frame);
 
     Vec4 base = m.base_color * sp.color;
     if (m.base_color_texture.valid()) base = base * sample_texture(scene, m.base_color_texture, sp);
@@ -189,6 +192,8 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     }
     p.distribution = options.gltf_distribution;
     p.layering = options.gltf_layering;
+    p.anisotropy = anisotropy;
+    set_iridescence(scene, m, sp, p);
     // KHR_materials_transmission: a rough dielectric with the material's IOR (exact
     // Fresnel instead of Schlick) whose refracted light takes the base colour; the
     // specular extension scales its reflection as it scales glTF's f0 and f90. The

@@ -1,12 +1,16 @@
-// The glTF 2.0 metallic-roughness BRDF (spec Appendix B, with KHR_materials_specular
-// and _ior): a GGX (or, for comparisons, Beckmann) specular lobe with height-correlated
-// Smith masking and Schlick Fresnel, over a Lambertian base. Roughness 0 makes the
-// specular lobe a perfect mirror.
+// The glTF 2.0 metallic-roughness BRDF (spec Appendix B, with KHR_materials_specular,
+// _ior, _anisotropy and _iridescence): a GGX (or, for comparisons, Beckmann) specular
+// lobe with height-correlated Smith masking and Schlick Fresnel (optionally mixed with a
+// thin film's), over a Lambertian base. Roughness 0 makes the lobe a perfect mirror.
 #pragma once
 
+#include <array>
+
+#include "materials/anisotropy_albedo.h"
 #include "materials/bsdf.h"
 #include "materials/microfacet.h"
 #include "materials/specular_albedo.h"
+#include "materials/thin_film.h"
 
 namespace penumbra {
 
@@ -35,6 +39,15 @@ struct MetalRoughParams {
     // GGX as the spec says; Beckmann to compare (the --microfacet switch).
     MicrofacetType distribution = MicrofacetType::Ggx;
     GltfLayering layering = GltfLayering::AlbedoScaled;
+    // KHR_materials_anisotropy: strength in [0, 1]. The lobe's alpha along the local x
+    // axis (the anisotropy direction: the caller's frame must follow it) is
+    // mix(alpha, 1, strength^2), along y alpha. 0: isotropic.
+    float anisotropy = 0;
+    // KHR_materials_iridescence: the share of a thin film's Fresnel in both the
+    // dielectric's and the metal's (factor x texture R); 0, or a film of thickness 0, is
+    // no film. The dielectric's film sits on its f0 / f90 and is scaled by f90.
+    float iridescence = 0;
+    ThinFilm film;
 };
 
 class MetalRoughBsdf final : public Bsdf {
@@ -52,12 +65,20 @@ public:
 private:
     // Mixed Fresnel of the dielectric and metal layers at cos(theta) = c.
     Spectrum specular_fresnel(float c) const;
+    // The dielectric layer's Fresnel alone (with its film).
+    Spectrum dielectric_fresnel(float c) const;
     // The base's BRDF value; cos_vh only matters to the spec's layering.
-    Spectrum diffuse_term(float cos_o, float cos_i, float cos_vh) const;
-    // The fraction of light at cos(theta) = mu that the dielectric's specular layer
-    // leaves to the base: 1 - E(mu) (AlbedoScaled) or 1 - F(mu) (Spec), scalar as the
-    // spec's max_value(F) (KHR_materials_specular).
-    float base_transmittance(float mu) const;
+    Spectrum diffuse_term(Vec3 wo, Vec3 wi, float cos_vh) const;
+    // The fraction of light towards w that the dielectric's specular layer leaves to the
+    // base: 1 - E(w) (AlbedoScaled) or 1 - F(w.z) (Spec), scalar as the spec's
+    // max_value(F) (KHR_materials_specular).
+    float base_transmittance(Vec3 w) const;
+    // 1 - max_value(F(mu)) of the dielectric layer.
+    float fresnel_transmittance(float mu) const;
+    // The f0 that the base's layering uses towards cos(theta) = mu (see m_film_bound).
+    float layer_f0(float mu) const;
+    // E_avg of the layering with a film, by quadrature over the hemisphere.
+    float film_average_albedo() const;
     // Probability of choosing the specular lobe for this wo.
     float specular_probability(Vec3 wo) const;
     float pdf_specular(Vec3 wo, Vec3 wi) const;
@@ -65,8 +86,16 @@ private:
     MetalRoughParams m_p;
     MicrofacetDistribution m_dist;
     bool m_delta;
+    bool m_aniso = false;     // alpha_x != alpha_y
+    bool m_film = false;      // iridescence > 0 with a film of positive thickness
+    Spectrum m_film_f0;       // the dielectric's f0 under its film: dielectric_f0 / f90
     float m_f0_max;           // the largest channel of dielectric_f0
+    // With a film: m_film_bound[i] is the smallest f0 whose Schlick curve (with f90)
+    // bounds max_value(F(c)) of the dielectric at every node c = j / kFilmNodes, j >= i.
+    static constexpr int kFilmNodes = 32;
+    std::array<float, kFilmNodes + 1> m_film_bound{};
     SpecularAlbedo m_albedo;  // AlbedoScaled, rough lobes only
+    AnisotropicSpecularAlbedo m_aniso_albedo;  // the same for anisotropic lobes
     float m_base_norm = 1;    // AlbedoScaled: 1 / (1 - E_avg)
 };
 

@@ -1,6 +1,7 @@
 // Microfacet distributions shared by all rough models, in the local frame (z = macro
-// normal, isotropic alpha): GGX and Beckmann with Smith masking and visible-normal
-// sampling (Walter 2007; Heitz 2014, 2018; Jakob 2014); MicrofacetDistribution picks one.
+// normal; alpha_x along x, alpha_y along y, equal when isotropic): GGX and Beckmann with
+// Smith masking and visible-normal sampling (Walter 2007; Heitz 2014, 2018; Jakob 2014);
+// MicrofacetDistribution picks one.
 #pragma once
 
 #include <algorithm>
@@ -11,15 +12,30 @@
 
 namespace penumbra {
 
+// Anisotropic GGX and Beckmann are their alpha-1 versions with the microsurface stretched
+// by (alpha_x, alpha_y) (Heitz 2014, "Understanding the Masking-Shadowing Function", sec.
+// 5.3): Lambda(w) is the isotropic one at the projected roughness
+// sqrt(alpha_x^2 cos^2 phi + alpha_y^2 sin^2 phi), and visible normals are sampled in the
+// stretched space. The isotropic case keeps its own expressions (bitwise as before).
 class GgxDistribution {
 public:
-    explicit GgxDistribution(float alpha) : m_alpha(std::max(alpha, 1e-7f)) {}
-    float alpha() const { return m_alpha; }
+    explicit GgxDistribution(float alpha) : GgxDistribution(alpha, alpha) {}
+    GgxDistribution(float alpha_x, float alpha_y)
+        : m_alpha(std::max(alpha_x, 1e-7f)), m_alpha_y(std::max(alpha_y, 1e-7f)) {}
+    float alpha() const { return m_alpha; }  // alpha_x
+    float alpha_x() const { return m_alpha; }
+    float alpha_y() const { return m_alpha_y; }
 
     // Normal distribution D(h), normalized so that the integral of D(h) cos(theta_h)
     // over the hemisphere is 1.
     float D(Vec3 h) const {
         if (h.z <= 0) return 0;
+        if (m_alpha != m_alpha_y) {
+            // 1 / (pi ax ay (x^2/ax^2 + y^2/ay^2 + z^2)^2) (Heitz 2014, eq. 85).
+            const float x = h.x / m_alpha, y = h.y / m_alpha_y;
+            const float s = h.z * h.z + (x * x + y * y);
+            return 1 / (kPi * m_alpha * m_alpha_y * s * s);
+        }
         // cos^2 (a^2 - 1) + 1 as cos^2 a^2 + sin^2, with sin^2 from x and y: near the
         // normal, 1 - cos^2 is a few float ulps and cancels catastrophically once a^2 is
         // small (1e-5 at roughness 0.05).
@@ -31,6 +47,11 @@ public:
     float lambda(Vec3 w) const {
         const float cos2 = w.z * w.z;
         if (cos2 <= 0) return 0;
+        if (m_alpha != m_alpha_y) {
+            // alpha(phi)^2 tan^2 = (ax^2 x^2 + ay^2 y^2) / z^2 (Heitz 2014, eq. 86).
+            const float x = m_alpha * w.x, y = m_alpha_y * w.y;
+            return 0.5f * (-1 + std::sqrt(1 + (x * x + y * y) / cos2));
+        }
         const float tan2 = std::max(0.0f, 1 - cos2) / cos2;
         return 0.5f * (-1 + std::sqrt(1 + m_alpha * m_alpha * tan2));
     }
@@ -47,7 +68,7 @@ public:
     // Samples a visible normal for wo (wo.z > 0), Heitz 2018 ("Sampling the GGX
     // Distribution of Visible Normals", listing 1).
     Vec3 sample_visible(Vec3 wo, Vec2 u) const {
-        const Vec3 vh = normalize(Vec3(m_alpha * wo.x, m_alpha * wo.y, wo.z));
+        const Vec3 vh = normalize(Vec3(m_alpha * wo.x, m_alpha_y * wo.y, wo.z));
         const float lensq = vh.x * vh.x + vh.y * vh.y;
         const Vec3 t1 = lensq > 0 ? Vec3(-vh.y, vh.x, 0) / std::sqrt(lensq) : Vec3(1, 0, 0);
         const Vec3 t2 = cross(vh, t1);
@@ -56,17 +77,20 @@ public:
         const float s = 0.5f * (1 + vh.z);
         const float p2 = (1 - s) * std::sqrt(std::max(0.0f, 1 - p1 * p1)) + s * r * std::sin(phi);
         const Vec3 nh = t1 * p1 + t2 * p2 + vh * std::sqrt(std::max(0.0f, 1 - p1 * p1 - p2 * p2));
-        return normalize(Vec3(m_alpha * nh.x, m_alpha * nh.y, std::max(1e-6f, nh.z)));
+        return normalize(Vec3(m_alpha * nh.x, m_alpha_y * nh.y, std::max(1e-6f, nh.z)));
     }
-    // Samples D(h) cos(theta_h) (Walter et al. 2007, eq. 35): tan^2 = a^2 u / (1 - u).
+    // Samples D(h) cos(theta_h) (Walter et al. 2007, eq. 35): tan^2 = a^2 u / (1 - u);
+    // anisotropic: the alpha-1 slopes scaled by (alpha_x, alpha_y).
     Vec3 sample_D(Vec2 u) const {
-        const float tan_theta = m_alpha * std::sqrt(u.x / std::max(1 - u.x, 1e-12f));
+        const float t = std::sqrt(u.x / std::max(1 - u.x, 1e-12f));
+        const float tan_x = m_alpha * t, tan_y = m_alpha_y * t;
         const float phi = 2 * kPi * u.y;
-        return normalize(Vec3(tan_theta * std::cos(phi), tan_theta * std::sin(phi), 1));
+        return normalize(Vec3(tan_x * std::cos(phi), tan_y * std::sin(phi), 1));
     }
 
 private:
-    float m_alpha;
+    float m_alpha;  // alpha_x
+    float m_alpha_y;
 };
 
 // Inverse error function: Winitzki's closed-form guess refined by Newton steps on
@@ -84,14 +108,26 @@ inline double erf_inv(double y) {
 
 class BeckmannDistribution {
 public:
-    explicit BeckmannDistribution(float alpha) : m_alpha(std::max(alpha, 1e-7f)) {}
-    float alpha() const { return m_alpha; }
+    explicit BeckmannDistribution(float alpha) : BeckmannDistribution(alpha, alpha) {}
+    BeckmannDistribution(float alpha_x, float alpha_y)
+        : m_alpha(std::max(alpha_x, 1e-7f)), m_alpha_y(std::max(alpha_y, 1e-7f)) {}
+    float alpha() const { return m_alpha; }  // alpha_x
+    float alpha_x() const { return m_alpha; }
+    float alpha_y() const { return m_alpha_y; }
 
     // D(h) = exp(-tan^2 / a^2) / (pi a^2 cos^4) (Cook & Torrance 1982; Walter et al.
     // 2007, eq. 25); tan^2 from x and y, as for GGX, so narrow lobes keep their shape.
     float D(Vec3 h) const {
         if (h.z <= 0) return 0;
-        const float cos2 = h.z * h.z, a2 = m_alpha * m_alpha;
+        const float cos2 = h.z * h.z;
+        if (m_alpha != m_alpha_y) {
+            // exp(-(x^2/ax^2 + y^2/ay^2) / z^2) / (pi ax ay cos^4) (Heitz 2014, eq. 82).
+            const float x = h.x / m_alpha, y = h.y / m_alpha_y;
+            const float e = (x * x + y * y) / cos2;
+            if (!(e < 80)) return 0;
+            return std::exp(-e) / (kPi * m_alpha * m_alpha_y * cos2 * cos2);
+        }
+        const float a2 = m_alpha * m_alpha;
         const float tan2 = (h.x * h.x + h.y * h.y) / cos2;
         // Far in the tail exp() is 0 while cos^4 may underflow too: 0, not 0 / 0.
         if (!(tan2 < 80 * a2)) return 0;
@@ -102,7 +138,13 @@ public:
     float lambda(Vec3 w) const {
         const float sin_theta = std::sqrt(w.x * w.x + w.y * w.y);
         if (sin_theta == 0) return 0;
-        const double a = std::abs(w.z) / (double(m_alpha) * sin_theta);
+        // alpha(phi) sin(theta) = sqrt(ax^2 x^2 + ay^2 y^2) when anisotropic.
+        const double alpha_sin =
+            m_alpha == m_alpha_y
+                ? double(m_alpha) * sin_theta
+                : std::sqrt(double(m_alpha * w.x) * (m_alpha * w.x) +
+                            double(m_alpha_y * w.y) * (m_alpha_y * w.y));
+        const double a = std::abs(w.z) / alpha_sin;
         const double l = 0.5 * (std::exp(-a * a) / (a * std::sqrt(double(kPi))) - std::erfc(a));
         return float(std::max(0.0, l));
     }
@@ -119,21 +161,23 @@ public:
     // inverts its CDF numerically in the erf domain (Jakob 2014, "An Improved Visible
     // Normal Sampling Routine for the Beckmann Distribution").
     Vec3 sample_visible(Vec3 wo, Vec2 u) const {
-        const Vec3 ws = normalize(Vec3(m_alpha * wo.x, m_alpha * wo.y, wo.z));
+        const Vec3 ws = normalize(Vec3(m_alpha * wo.x, m_alpha_y * wo.y, wo.z));
         const float sin_theta = std::sqrt(ws.x * ws.x + ws.y * ws.y);
         double sx, sy;
         sample_slopes(ws.z, sin_theta, u, sx, sy);
         const float cos_phi = sin_theta > 0 ? ws.x / sin_theta : 1;
         const float sin_phi = sin_theta > 0 ? ws.y / sin_theta : 0;
         const float x = float(cos_phi * sx - sin_phi * sy) * m_alpha;
-        const float y = float(sin_phi * sx + cos_phi * sy) * m_alpha;
+        const float y = float(sin_phi * sx + cos_phi * sy) * m_alpha_y;
         return normalize(Vec3(-x, -y, 1));
     }
-    // Samples D(h) cos(theta_h) (Walter et al. 2007, eq. 28): tan^2 = -a^2 log(1 - u).
+    // Samples D(h) cos(theta_h) (Walter et al. 2007, eq. 28): tan^2 = -a^2 log(1 - u);
+    // anisotropic: the alpha-1 slopes scaled by (alpha_x, alpha_y).
     Vec3 sample_D(Vec2 u) const {
-        const float tan_theta = m_alpha * std::sqrt(-std::log1p(-std::min(u.x, 1 - 1e-7f)));
+        const float t = std::sqrt(-std::log1p(-std::min(u.x, 1 - 1e-7f)));
+        const float tan_x = m_alpha * t, tan_y = m_alpha_y * t;
         const float phi = 2 * kPi * u.y;
-        return normalize(Vec3(tan_theta * std::cos(phi), tan_theta * std::sin(phi), 1));
+        return normalize(Vec3(tan_x * std::cos(phi), tan_y * std::sin(phi), 1));
     }
 
 private:
@@ -169,7 +213,8 @@ private:
         sx = erf_inv(b);
     }
 
-    float m_alpha;
+    float m_alpha;  // alpha_x
+    float m_alpha_y;
 };
 
 enum class MicrofacetType { Ggx, Beckmann };
@@ -183,9 +228,13 @@ enum class MaskingModel { SmithCorrelated, SmithSeparable, VCavity };
 class MicrofacetDistribution {
 public:
     MicrofacetDistribution(MicrofacetType type, float alpha)
-        : m_type(type), m_alpha(std::max(alpha, 1e-7f)) {}
+        : MicrofacetDistribution(type, alpha, alpha) {}
+    MicrofacetDistribution(MicrofacetType type, float alpha_x, float alpha_y)
+        : m_type(type), m_alpha(std::max(alpha_x, 1e-7f)), m_alpha_y(std::max(alpha_y, 1e-7f)) {}
     MicrofacetType type() const { return m_type; }
-    float alpha() const { return m_alpha; }
+    float alpha() const { return m_alpha; }  // alpha_x
+    float alpha_x() const { return m_alpha; }
+    float alpha_y() const { return m_alpha_y; }
 
     float D(Vec3 h) const { return visit([&](const auto& d) { return d.D(h); }); }
     float lambda(Vec3 w) const { return visit([&](const auto& d) { return d.lambda(w); }); }
@@ -227,15 +276,16 @@ public:
     }
 
 private:
-    // Calls f with the concrete distribution; both are just alpha, so this is free.
+    // Calls f with the concrete distribution; both are just two alphas, so this is free.
     template <typename F>
     auto visit(F&& f) const -> decltype(f(GgxDistribution(1))) {
-        if (m_type == MicrofacetType::Beckmann) return f(BeckmannDistribution(m_alpha));
-        return f(GgxDistribution(m_alpha));
+        if (m_type == MicrofacetType::Beckmann) return f(BeckmannDistribution(m_alpha, m_alpha_y));
+        return f(GgxDistribution(m_alpha, m_alpha_y));
     }
 
     MicrofacetType m_type;
-    float m_alpha;
+    float m_alpha;  // alpha_x
+    float m_alpha_y;
 };
 
 }  // namespace penumbra

@@ -109,7 +109,11 @@ Vec2 integrate_specular_albedo(MicrofacetType type, float alpha, float mu, int n
     // At mu = 0 the view is tangent and the lobe sees nothing; just above, the limit.
     mu = std::clamp(mu, 1e-4f, 1.0f);
     const Vec3 wo(std::sqrt(1 - mu * mu), 0, mu);
-    const MicrofacetDistribution dist(type, alpha);
+    return integrate_specular_albedo(MicrofacetDistribution(type, alpha), wo, n_radial, n_angular);
+}
+
+Vec2 integrate_specular_albedo(const MicrofacetDistribution& dist, Vec3 wo, int n_radial,
+                               int n_angular) {
     // Visible normals have density G1(wo) (wo.h) D(h) / wo.z; the reflected direction's
     // estimator of f cos / pdf is then G(wo, wi) / G1(wo) times Fresnel. The sample
     // square's first coordinate is radial: the distribution's far tail (grazing wi,

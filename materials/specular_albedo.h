@@ -50,5 +50,8 @@ struct SpecularAlbedoGrid {
 // n_radial Gauss-Legendre nodes times n_angular midpoints.
 Vec2 integrate_specular_albedo(MicrofacetType type, float alpha, float mu, int n_radial,
                                int n_angular);
+// The same for any (also anisotropic) distribution and a unit wo with wo.z > 0.
+Vec2 integrate_specular_albedo(const MicrofacetDistribution& dist, Vec3 wo, int n_radial,
+                               int n_angular);
 
 }  // namespace penumbra

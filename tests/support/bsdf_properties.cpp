@@ -41,6 +41,13 @@ Chi2Result bsdf_chi2_sphere(const Bsdf& bsdf, Vec3 wo, const BsdfChi2Options& o,
 
 Chi2Result bsdf_chi2_half_vector(const Bsdf& bsdf, Vec3 wo, float alpha, float eta,
                                  const BsdfChi2Options& o, Transport mode) {
+    return bsdf_chi2_half_vector(bsdf, wo, Vec2(alpha, alpha), eta, o, mode);
+}
+
+Chi2Result bsdf_chi2_half_vector(const Bsdf& bsdf, Vec3 wo, Vec2 alpha, float eta,
+                                 const BsdfChi2Options& o, Transport mode) {
+    // Anisotropic lobes bin h by its stretched slope (x / alpha.x, y / alpha.y) / z, in
+    // which they are round.
     const float etap = eta == 0 ? 0 : (wo.z > 0 ? eta : 1 / eta);
     // Cells of 0.1 x 0.1 over [-2, 0] x [-1, 1] (reflection) and [0, 2] x [-1, 1].
     const int ny = 20, nx = eta == 0 ? 20 : 40;
@@ -77,9 +84,9 @@ Chi2Result bsdf_chi2_half_vector(const Bsdf& bsdf, Vec3 wo, float alpha, float e
                        wo.z + e * dither(s->wi.z, dither_rng)};
         if (h[2] < 0)
             for (double& c : h) c = -c;
-        const double sin_t = std::sqrt(h[0] * h[0] + h[1] * h[1]);
-        const double t = sin_t / (h[2] * alpha), q = t / std::sqrt(1 + t * t);
-        const double phi = std::atan2(h[1], h[0]);
+        const double sx = h[0] / alpha.x, sy = h[1] / alpha.y;
+        const double t = std::sqrt(sx * sx + sy * sy) / h[2], q = t / std::sqrt(1 + t * t);
+        const double phi = std::atan2(sy, sx);
         const double x = q * std::cos(phi) + (reflection ? 1 : 3), y = q * std::sin(phi) + 1;
         const int ix = std::clamp(int(x / cell), 0, nx - 1),
                   iy = std::clamp(int(y / cell), 0, ny - 1);
@@ -92,11 +99,11 @@ Chi2Result bsdf_chi2_half_vector(const Bsdf& bsdf, Vec3 wo, float alpha, float e
         const double qx = x - (reflection ? 1 : 3), qy = y - 1;
         const double q2 = qx * qx + qy * qy;
         if (q2 >= 1) return 0;
-        const double t2 = q2 / (1 - q2), tan_theta = alpha * std::sqrt(t2);
-        const double cos_theta = 1 / std::sqrt(1 + tan_theta * tan_theta);
-        const double phi = std::atan2(qy, qx), sin_theta = tan_theta * cos_theta;
-        const Vec3 h(float(sin_theta * std::cos(phi)), float(sin_theta * std::sin(phi)),
-                     float(cos_theta));
+        const double t2 = q2 / (1 - q2), t = std::sqrt(t2);
+        const double phi = std::atan2(qy, qx);
+        const double tx = alpha.x * t * std::cos(phi), ty = alpha.y * t * std::sin(phi);
+        const double cos_theta = 1 / std::sqrt(1 + tx * tx + ty * ty);
+        const Vec3 h(float(tx * cos_theta), float(ty * cos_theta), float(cos_theta));
         const float woh = dot(wo, h);
         if (woh * wo.z <= 0) return 0;
         Vec3 wi;
@@ -112,9 +119,9 @@ Chi2Result bsdf_chi2_half_vector(const Bsdf& bsdf, Vec3 wo, float alpha, float e
             const double wih = dot(wi, h), d = wih + woh / etap;
             jacobian = d * d / std::abs(wih);
         }
-        // d omega_h / d area of the disk: alpha^2 cos^3 (1 + t^2)^2.
+        // d omega_h / d area of the disk: alpha_x alpha_y cos^3 (1 + t^2)^2.
         const double dh_da =
-            double(alpha) * alpha * cos_theta * cos_theta * cos_theta * (1 + t2) * (1 + t2);
+            double(alpha.x) * alpha.y * cos_theta * cos_theta * cos_theta * (1 + t2) * (1 + t2);
         return double(bsdf.pdf(wo, wi, mode)) * jacobian * dh_da;
     };
     // At alpha 1e-3, pdf() at a wi rebuilt from h in float is only good to ~1e-4

@@ -27,6 +27,11 @@ Chi2Result bsdf_chi2_sphere(const Bsdf& bsdf, Vec3 wo, const BsdfChi2Options& op
 Chi2Result bsdf_chi2_half_vector(const Bsdf& bsdf, Vec3 wo, float alpha, float eta,
                                  const BsdfChi2Options& options,
                                  Transport mode = Transport::Radiance);
+// The same for an anisotropic lobe: t = |(h.x / alpha.x, h.y / alpha.y)| / h.z, and the
+// disk's angle is that of the stretched slope.
+Chi2Result bsdf_chi2_half_vector(const Bsdf& bsdf, Vec3 wo, Vec2 alpha, float eta,
+                                 const BsdfChi2Options& options,
+                                 Transport mode = Transport::Radiance);
 
 // n samples at wo: every non-specular sample must have f and pdf equal (to relative
 // rel_tol) to eval() and pdf() at its wi, a positive pdf, a unit wi and a finite weight

@@ -1,0 +1,30 @@
+// Thin-film interference for KHR_materials_iridescence: the reflectance of a dielectric
+// film over a base, integrated over the visible spectrum in Fourier space (Belcour &
+// Barla 2017, "A Practical Extension to Microfacet Theory for the Modeling of Varying
+// Iridescence"), with the spec's simplifications (Schlick interfaces, no polarization).
+#pragma once
+
+#include "core/math/vec.h"
+
+namespace penumbra {
+
+struct ThinFilm {
+    float outside_ior = 1;  // the medium above the film (1: air)
+    float ior = 1.3f;       // the film's (iridescenceIor)
+    float thickness = 400;  // nm
+};
+
+// Linear Rec.709 reflectance of the film over a base with normal-incidence reflectance
+// base_f0 (per channel; its IOR is inferred from f0 as for a dielectric, also for metals),
+// at cos_theta between the direction and the (micro)normal in the outside medium. The
+// spec's implementation notes (KHR_materials_iridescence, "Analytic Spectral
+// Integration"), clamped to [0, 1]: out-of-gamut colours can leave that range.
+Spectrum thin_film_reflectance(const ThinFilm& film, Spectrum base_f0, float cos_theta);
+
+// The Fourier-space spectral sensitivity of the spec (XYZ Gaussian fits converted to
+// Rec.709) at optical path difference opd (nm) and per-channel phase shift, exposed for
+// tests: the integral over wavenumber of the sensitivity times cos(2 pi opd nu + shift),
+// normalized so that opd 0, shift 0 gives about white.
+Spectrum thin_film_sensitivity(double opd, Spectrum shift);
+
+}  // namespace penumbra
