@@ -84,10 +84,12 @@ MetalRoughBsdf::MetalRoughBsdf(const MetalRoughParams& p)
         // c from there to 1: a suffix maximum over nodes. (One bound for all c costs a
         // white dielectric under the spec's default film 0.23 at normal incidence: near
         // grazing the film's Schlick-based interference departs from Schlick's shape.)
-        // 32 nodes resolve the film's oscillation in c (a period of 0.1 at 1200 nm).
+        // 32 nodes resolve the film's oscillation in c (a period of 0.1 at 1200 nm). Only
+        // the energy-conserving layering of a base needs it.
+        const bool needs_bound = m_p.layering == GltfLayering::AlbedoScaled && m_p.metallic < 1;
         m_film_bound[kFilmNodes] = 0;
         float bound = 0;
-        for (int i = kFilmNodes; i >= 1; --i) {
+        for (int i = kFilmNodes; i >= 1 && needs_bound; --i) {
             const float c = float(i) / kFilmNodes, m = 1 - c;
             const float w = (m * m) * (m * m) * m;
             const float f = max_component(dielectric_fresnel(c));
