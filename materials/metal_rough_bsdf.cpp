@@ -50,6 +50,12 @@ MicrofacetDistribution make_distribution(const MetalRoughParams& p) {
     return bound[std::clamp(static_cast<int>(c_lo * nodes), 0, nodes)];
 }
 
+// 1 - the Schlick reflectance f0 + (f90 - f0)(1 - mu)^5.
+float schlick_transmittance(float f0, float f90, float mu) {
+    const float w = std::pow(1 - std::clamp(mu, 0.0f, 1.0f), 5.0f);
+    return 1 - (f0 + (f90 - f0) * w);
+}
+
 bool is_delta(const MetalRoughParams& p) {
     if (!(p.alpha < MetalRoughBsdf::kDeltaAlpha)) return false;
     if (!(p.anisotropy > 0)) return true;
@@ -78,10 +84,12 @@ MetalRoughBsdf::MetalRoughBsdf(const MetalRoughParams& p)
         // c from there to 1: a suffix maximum over nodes. (One bound for all c costs a
         // white dielectric under the spec's default film 0.23 at normal incidence: near
         // grazing the film's Schlick-based interference departs from Schlick's shape.)
-        // 32 nodes resolve the film's oscillation in c (a period of 0.1 at 1200 nm).
+        // 32 nodes resolve the film's oscillation in c (a period of 0.1 at 1200 nm). Only
+        // the energy-conserving layering of a base needs it.
+        const bool needs_bound = m_p.layering == GltfLayering::AlbedoScaled && m_p.metallic < 1;
         m_film_bound[kFilmNodes] = 0;
         float bound = 0;
-        for (int i = kFilmNodes; i >= 1; --i) {
+        for (int i = kFilmNodes; i >= 1 && needs_bound; --i) {
             const float c = float(i) / kFilmNodes, m = 1 - c;
             const float w = (m * m) * (m * m) * m;
             const float f = max_component(dielectric_fresnel(c));
@@ -116,8 +124,7 @@ MetalRoughBsdf::MetalRoughBsdf(const MetalRoughParams& p)
 
 float MetalRoughBsdf::fresnel_transmittance(float mu) const {
     if (m_film) return 1 - max_component(dielectric_fresnel(std::clamp(mu, 0.0f, 1.0f)));
-    const float w = std::pow(1 - std::clamp(mu, 0.0f, 1.0f), 5.0f);
-    return 1 - (m_f0_max + (m_p.dielectric_f90 - m_f0_max) * w);
+    return schlick_transmittance(m_f0_max, m_p.dielectric_f90, mu);
 }
 
 float MetalRoughBsdf::layer_f0(float mu) const {
@@ -199,14 +206,18 @@ float MetalRoughBsdf::film_average_albedo() const {
 }
 
 float MetalRoughBsdf::base_transmittance(Vec3 w) const {
+    if (!(m_aniso | m_film)) {
+        // Today's isotropic layer, kept apart so that it costs what it did.
+        if (m_p.layering == GltfLayering::Spec || m_delta)
+            return schlick_transmittance(m_f0_max, m_p.dielectric_f90, w.z);
+        const Vec2 ab = m_albedo.at(w.z);
+        return 1 - (m_f0_max * ab.x + (m_p.dielectric_f90 - m_f0_max) * ab.y);
+    }
     if (m_p.layering == GltfLayering::Spec || m_delta) {
         // The spec's 1 - F; for a mirror layer this is also 1 - E, its albedo (with a
         // film, the bound's, as the constructor's E_avg assumes).
-        if (m_delta && m_film && m_p.layering == GltfLayering::AlbedoScaled) {
-            const float f0 = layer_f0(w.z);
-            const float m = std::pow(1 - std::clamp(w.z, 0.0f, 1.0f), 5.0f);
-            return 1 - (f0 + (m_p.dielectric_f90 - f0) * m);
-        }
+        if (m_delta && m_film && m_p.layering == GltfLayering::AlbedoScaled)
+            return schlick_transmittance(layer_f0(w.z), m_p.dielectric_f90, w.z);
         return fresnel_transmittance(w.z);
     }
     const Vec2 ab = m_aniso ? m_aniso_albedo.at(w) : m_albedo.at(w.z);
