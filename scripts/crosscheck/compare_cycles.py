@@ -28,6 +28,7 @@ REGIONS = [
     ("tall block", 40, 60, 60, 95),
     ("short block", 68, 90, 90, 110),
     ("mirror sphere", 68, 52, 88, 72),
+    ("whole image", 0, 0, 128, 128),
 ]
 
 
