@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/math/gauss_legendre.h"
 #include "core/math/vec.h"
 #include "materials/sheen.h"
 
@@ -28,29 +29,6 @@ float row_roughness(int j) {
     return r_min + (1 - r_min) * (j / float(kRows - 1));
 }
 
-// Gauss-Legendre nodes and weights on [0, 1] (weights sum to 1).
-void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {
-    x.resize(n);
-    w.resize(n);
-    const double pi = std::acos(-1.0);
-    for (int i = 0; i < n; ++i) {
-        double z = std::cos(pi * (i + 0.75) / (n + 0.5)), dp = 1;
-        for (int it = 0; it < 100; ++it) {
-            double p1 = 1, p0 = 0;
-            for (int j = 1; j <= n; ++j) {
-                const double pm = p0;
-                p0 = p1;
-                p1 = ((2 * j - 1) * z * p0 - (j - 1) * pm) / j;
-            }
-            dp = n * (z * p1 - p0) / (z * z - 1);
-            const double step = p1 / dp;
-            z -= step;
-            if (std::abs(step) < 1e-15) break;
-        }
-        x[i] = 0.5 * (1 - z);
-        w[i] = 1 / ((1 - z * z) * dp * dp);
-    }
-}
 
 Table build_table() {
     Table t;
