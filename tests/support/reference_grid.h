@@ -20,7 +20,7 @@ struct ReferenceGrid {
 };
 
 // n x n vertices over [-1, 1]^2, z = 0.3 sin(2x) cos(3y); the normals and tangents of that
-// surface, uv0 in [0, 1]^2, uv1 in [0, 2] x [-1, 0], colours (u, v, 1 - u, 1), and the
+// surface, uv0 in [0.05, 0.95]^2 (not dyadic), uv1 in [0, 2] x [-1, 0], colours (u, v, 1 - u, 1), and the
 // bitangent sign alternating by row so that a lost w shows.
 inline ReferenceGrid make_reference_grid(int n = 9) {
     ReferenceGrid g;
@@ -35,7 +35,7 @@ inline ReferenceGrid make_reference_grid(int n = 9) {
             g.positions.insert(g.positions.end(),
                                {x, y, 0.3f * std::sin(2 * x) * std::cos(3 * y)});
             g.normals.insert(g.normals.end(), {-dzdx / nl, -dzdy / nl, 1 / nl});
-            g.uv0.insert(g.uv0.end(), {u, v});
+            g.uv0.insert(g.uv0.end(), {0.05f + 0.9f * u, 0.05f + 0.9f * v});
             g.uv1.insert(g.uv1.end(), {2 * u, -v});
             g.tangents.insert(g.tangents.end(), {1 / tl, 0, dzdx / tl, j % 2 ? -1.0f : 1.0f});
             g.colors.insert(g.colors.end(), {u, v, 1 - u, 1});
@@ -48,8 +48,8 @@ inline ReferenceGrid make_reference_grid(int n = 9) {
     return g;
 }
 
-// Largest error allowed per attribute, in the attribute's units (|difference| per
-// component; for normals, 1 - cos of the angle).
+// Largest error allowed per attribute, in the attribute's units: |difference| per
+// component; for normals, the length of the difference vector.
 struct GridTolerance {
     float position = 0, normal = 0, uv0 = 0, uv1 = 0, tangent = 0, color = 0;
 };
@@ -102,7 +102,7 @@ inline GridTolerance expect_matches_grid(const TriangleMesh& m, const ReferenceG
             const Vec3 p = m.positions[v], nrm = m.normals[v];
             for (int a = 0; a < 3; ++a)
                 track(worst.position, std::abs(p[a] - g.positions[3 * rv + a]));
-            track(worst.normal, 1 - dot(nrm, Vec3{g.normals[3 * rv], g.normals[3 * rv + 1],
+            track(worst.normal, length(nrm - Vec3{g.normals[3 * rv], g.normals[3 * rv + 1],
                                                   g.normals[3 * rv + 2]}));
             for (int a = 0; a < 2; ++a) {
                 track(worst.uv0, std::abs(m.uv0[v][a] - g.uv0[2 * rv + a]));
