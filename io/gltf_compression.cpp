@@ -5,11 +5,10 @@
 // those two things in the JSON, let tinygltf parse, undo them, then decode.
 #include "io/gltf_compression.h"
 
-#include <nlohmann/json.hpp>
-
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <nlohmann/json.hpp>
 
 #include "core/error.h"
 #include "io/gltf_draco.h"

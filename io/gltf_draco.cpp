@@ -18,11 +18,16 @@ namespace {
 
 int components(int type) {
     switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return 1;
-    case TINYGLTF_TYPE_VEC2: return 2;
-    case TINYGLTF_TYPE_VEC3: return 3;
-    case TINYGLTF_TYPE_VEC4: return 4;
-    default: return 0;  // matrices are no vertex attributes
+        case TINYGLTF_TYPE_SCALAR:
+            return 1;
+        case TINYGLTF_TYPE_VEC2:
+            return 2;
+        case TINYGLTF_TYPE_VEC3:
+            return 3;
+        case TINYGLTF_TYPE_VEC4:
+            return 4;
+        default:
+            return 0;  // matrices are no vertex attributes
     }
 }
 
@@ -42,16 +47,23 @@ bool convert(const draco::PointAttribute& att, uint32_t points, int n, std::vect
 
 // Appends `points` values of `att` as `component_type` (glTF's enum); false when the type
 // is not a vertex attribute type or a value does not fit it.
-bool append_attribute(const draco::PointAttribute& att, uint32_t points, int n,
-                      int component_type, std::vector<uint8_t>& out) {
+bool append_attribute(const draco::PointAttribute& att, uint32_t points, int n, int component_type,
+                      std::vector<uint8_t>& out) {
     switch (component_type) {
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return convert<float>(att, points, n, out);
-    case TINYGLTF_COMPONENT_TYPE_BYTE: return convert<int8_t>(att, points, n, out);
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return convert<uint8_t>(att, points, n, out);
-    case TINYGLTF_COMPONENT_TYPE_SHORT: return convert<int16_t>(att, points, n, out);
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return convert<uint16_t>(att, points, n, out);
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return convert<uint32_t>(att, points, n, out);
-    default: return false;
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            return convert<float>(att, points, n, out);
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+            return convert<int8_t>(att, points, n, out);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return convert<uint8_t>(att, points, n, out);
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+            return convert<int16_t>(att, points, n, out);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return convert<uint16_t>(att, points, n, out);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+            return convert<uint32_t>(att, points, n, out);
+        default:
+            return false;
     }
 }
 
@@ -107,8 +119,7 @@ void decode_draco(tinygltf::Model& model, const std::string& file) {
                        view.byteLength);
             draco::Decoder decoder;
             auto decoded = decoder.DecodeMeshFromBuffer(&bytes);
-            if (!decoded.ok())
-                fail("cannot decode (" + decoded.status().error_msg_string() + ")");
+            if (!decoded.ok()) fail("cannot decode (" + decoded.status().error_msg_string() + ")");
             const std::unique_ptr<draco::Mesh> mesh = std::move(decoded).value();
             const uint32_t points = mesh->num_points();
 
@@ -146,18 +157,25 @@ void decode_draco(tinygltf::Model& model, const std::string& file) {
             if (prim.indices >= 0 && claim(prim.indices, "indices", mesh->num_faces() * 3)) {
                 const size_t begin = out.size();
                 switch (model.accessors[size_t(prim.indices)].componentType) {
-                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-                    if (points > 256) fail("indices: " + std::to_string(points) + " points need "
-                                           "more than unsigned byte indices");
-                    append_indices<uint8_t>(*mesh, out);
-                    break;
-                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-                    if (points > 65536) fail("indices: " + std::to_string(points) + " points "
-                                             "need more than unsigned short indices");
-                    append_indices<uint16_t>(*mesh, out);
-                    break;
-                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: append_indices<uint32_t>(*mesh, out); break;
-                default: fail("indices accessor has no unsigned integer componentType");
+                    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                        if (points > 256)
+                            fail("indices: " + std::to_string(points) +
+                                 " points need "
+                                 "more than unsigned byte indices");
+                        append_indices<uint8_t>(*mesh, out);
+                        break;
+                    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+                        if (points > 65536)
+                            fail("indices: " + std::to_string(points) +
+                                 " points "
+                                 "need more than unsigned short indices");
+                        append_indices<uint16_t>(*mesh, out);
+                        break;
+                    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+                        append_indices<uint32_t>(*mesh, out);
+                        break;
+                    default:
+                        fail("indices accessor has no unsigned integer componentType");
                 }
                 finish(prim.indices, begin);
             }
@@ -171,8 +189,8 @@ void decode_draco(tinygltf::Model& model, const std::string& file) {
                     fail("attribute " + name + ": the Draco id must be a number");
                 const int id = attributes.Get(name).GetNumberAsInt();
                 const draco::PointAttribute* att = mesh->GetAttributeByUniqueId(uint32_t(id));
-                if (!att) fail("attribute " + name + ": the Draco mesh has no id " +
-                               std::to_string(id));
+                if (!att)
+                    fail("attribute " + name + ": the Draco mesh has no id " + std::to_string(id));
                 if (!claim(target->second, name, points)) continue;
                 const tinygltf::Accessor& a = model.accessors[size_t(target->second)];
                 const int n = components(a.type);
@@ -182,8 +200,10 @@ void decode_draco(tinygltf::Model& model, const std::string& file) {
                          std::to_string(int(att->num_components())));
                 const size_t begin = out.size();
                 if (!append_attribute(*att, points, n, a.componentType, out))
-                    fail("attribute " + name + ": Draco's values do not convert to the "
-                         "accessor's componentType " + std::to_string(a.componentType));
+                    fail("attribute " + name +
+                         ": Draco's values do not convert to the "
+                         "accessor's componentType " +
+                         std::to_string(a.componentType));
                 finish(target->second, begin);
             }
         }

@@ -70,8 +70,9 @@ void decode_meshopt(tinygltf::Model& model,
         m.stride = number(e, "byteStride", true, ok);
         m.count = number(e, "count", true, ok);
         if (!ok || !e.Has("mode") || !e.Get("mode").IsString())
-            fail("buffer, byteLength, byteStride, count and mode must be given, as non-negative "
-                 "numbers and a string");
+            fail(
+                "buffer, byteLength, byteStride, count and mode must be given, as non-negative "
+                "numbers and a string");
         m.mode = e.Get("mode").Get<std::string>();
         if (e.Has("filter")) {
             if (!e.Get("filter").IsString()) fail("filter must be a string");
@@ -85,8 +86,8 @@ void decode_meshopt(tinygltf::Model& model,
         const std::vector<unsigned char>& src = model.buffers[size_t(m.buffer)].data;
         if (m.offset > src.size() || m.length > src.size() - m.offset)
             fail("compressed bytes [" + std::to_string(m.offset) + ", +" +
-                 std::to_string(m.length) + ") outside buffer " + std::to_string(m.buffer) +
-                 " (" + std::to_string(src.size()) + " bytes)");
+                 std::to_string(m.length) + ") outside buffer " + std::to_string(m.buffer) + " (" +
+                 std::to_string(src.size()) + " bytes)");
 
         // Destination: this view's range of its own buffer.
         const bool attributes = m.mode == "ATTRIBUTES";
@@ -102,8 +103,10 @@ void decode_meshopt(tinygltf::Model& model,
             fail(std::to_string(m.count) + " elements of " + std::to_string(m.stride) +
                  " bytes cannot come from " + std::to_string(m.length) + " compressed bytes");
         if (size > view.byteLength)
-            fail("count * byteStride = " + std::to_string(size) + " exceeds the bufferView's "
-                 "byteLength " + std::to_string(view.byteLength));
+            fail("count * byteStride = " + std::to_string(size) +
+                 " exceeds the bufferView's "
+                 "byteLength " +
+                 std::to_string(view.byteLength));
         if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size())
             fail("bufferView buffer index " + std::to_string(view.buffer) + " out of range");
         if (size_t(view.buffer) == size_t(m.buffer))
@@ -114,8 +117,10 @@ void decode_meshopt(tinygltf::Model& model,
             // The fallback buffer has no bytes in the file; it grows to what its views
             // decode, never to a byteLength the file merely declares.
             if (end > fallback_length[size_t(view.buffer)])
-                fail("decoded range ends at byte " + std::to_string(end) + ", past the fallback "
-                     "buffer's byteLength " + std::to_string(fallback_length[size_t(view.buffer)]));
+                fail("decoded range ends at byte " + std::to_string(end) +
+                     ", past the fallback "
+                     "buffer's byteLength " +
+                     std::to_string(fallback_length[size_t(view.buffer)]));
             if (dst.size() < end) dst.resize(size_t(end), 0);
         } else if (end > dst.size()) {
             fail("decoded range ends at byte " + std::to_string(end) + ", past buffer " +

@@ -34,8 +34,8 @@ template <int N>
 void set_face(draco::TriangleSoupMeshBuilder& b, int att, int face, const std::vector<float>& v,
               const ReferenceGrid& g) {
     const uint32_t* c = &g.indices[3 * size_t(face)];
-    b.SetAttributeValuesForFace(att, draco::FaceIndex(uint32_t(face)), &v[N * c[0]],
-                                &v[N * c[1]], &v[N * c[2]]);
+    b.SetAttributeValuesForFace(att, draco::FaceIndex(uint32_t(face)), &v[N * c[0]], &v[N * c[1]],
+                                &v[N * c[2]]);
 }
 
 // The grid as one Draco mesh, quantised as gltf-transform's defaults do (positions 14 bits,
@@ -99,17 +99,20 @@ std::string write_draco(const ScratchDir& dir, const char* name, const DracoFile
     const int uv1 = b.add_accessor(-1, 0, test::kFloat, "VEC2", n);
     const int tan = b.add_accessor(-1, 0, test::kFloat, "VEC4", n);
     const int col = b.add_accessor(-1, 0, test::kFloat, "VEC4", n);
-    auto pair = [](const char* k, int v) { return "\"" + std::string(k) + "\":" + std::to_string(v); };
+    auto pair = [](const char* k, int v) {
+        return "\"" + std::string(k) + "\":" + std::to_string(v);
+    };
     const std::string prim =
         "{\"attributes\":{" + pair("POSITION", pos) + "," + pair("NORMAL", nrm) + "," +
-        pair("TEXCOORD_0", uv0) + "," + pair("TEXCOORD_1", uv1) + "," + pair("TANGENT", tan) +
-        "," + pair("COLOR_0", col) + "}," + pair("indices", idx) +
+        pair("TEXCOORD_0", uv0) + "," + pair("TEXCOORD_1", uv1) + "," + pair("TANGENT", tan) + "," +
+        pair("COLOR_0", col) + "}," + pair("indices", idx) +
         ",\"extensions\":{\"KHR_draco_mesh_compression\":{\"bufferView\":0,\"attributes\":{" +
         pair("POSITION", d.position) + "," + pair("NORMAL", d.normal) + "," +
         pair("TEXCOORD_0", d.uv0) + "," + pair("TEXCOORD_1", d.uv1) + "," +
         pair("TANGENT", d.tangent) + "," + pair("COLOR_0", d.color) + "}}}}";
-    const std::string ext = "\"extensionsUsed\":[\"KHR_draco_mesh_compression\"],"
-                            "\"extensionsRequired\":[\"KHR_draco_mesh_compression\"],";
+    const std::string ext =
+        "\"extensionsUsed\":[\"KHR_draco_mesh_compression\"],"
+        "\"extensionsRequired\":[\"KHR_draco_mesh_compression\"],";
     return b.write(dir, name, ext + test::one_mesh_scene(prim), storage);
 }
 
@@ -198,8 +201,10 @@ TEST(GltfDraco, CountMismatchAndMissingIdFail) {
     DracoFile fewer = d;
     fewer.num_points -= 1;  // the accessors declare one vertex less than Draco decodes
     expect_error(write_draco(dir, "count.glb", fewer, BufferStorage::Glb),
-                 "declares " + std::to_string(fewer.num_points) + " elements, the Draco mesh "
-                 "has " + std::to_string(d.num_points));
+                 "declares " + std::to_string(fewer.num_points) +
+                     " elements, the Draco mesh "
+                     "has " +
+                     std::to_string(d.num_points));
     expect_error(write_draco(dir, "count.glb", fewer, BufferStorage::Glb),
                  "count.glb: meshes[0].primitives[0]: KHR_draco_mesh_compression: ");
     DracoFile missing = d;
@@ -213,7 +218,10 @@ TEST(GltfDraco, CountMismatchAndMissingIdFail) {
 // min/max, of the values before quantisation).
 TEST(GltfDraco, ChessBoardMatchesItsAccessors) {
     const Scene s = load_gltf(test::shared_path("scenes/wild/ChessBoard/chess-board.glb"));
-    struct Expected { size_t triangles; Vec3 lo, hi; };
+    struct Expected {
+        size_t triangles;
+        Vec3 lo, hi;
+    };
     const Expected expected[] = {
         {117152, {-136.49016f, -136.49016f, -1.3464184f}, {136.49016f, 136.49016f, 12.515533f}},
         {13520, {-123.63547f, -132.45793f, -1.3464184f}, {132.45793f, 130.02608f, 11.350415f}},

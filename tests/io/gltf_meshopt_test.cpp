@@ -41,7 +41,8 @@ public:
         std::vector<uint8_t> enc;
         if (mode == "ATTRIBUTES") {
             enc.resize(meshopt_encodeVertexBufferBound(count, stride));
-            enc.resize(meshopt_encodeVertexBuffer(enc.data(), enc.size(), raw.data(), count, stride));
+            enc.resize(
+                meshopt_encodeVertexBuffer(enc.data(), enc.size(), raw.data(), count, stride));
         } else {
             const auto* idx = reinterpret_cast<const unsigned int*>(raw.data());
             const bool tri = mode == "TRIANGLES";
@@ -57,11 +58,11 @@ public:
         const size_t at = bin.size();
         bin.insert(bin.end(), enc.begin(), enc.end());
         while (m_fallback % 4) ++m_fallback;
-        std::string ext = "{\"buffer\":0,\"byteOffset\":" + std::to_string(at) +
-                          ",\"byteLength\":" + std::to_string(enc.size()) +
-                          ",\"byteStride\":" + std::to_string(stride) + ",\"mode\":\"" + mode +
-                          "\",\"count\":" +
-                          (count_override.empty() ? std::to_string(count) : count_override);
+        std::string ext =
+            "{\"buffer\":0,\"byteOffset\":" + std::to_string(at) +
+            ",\"byteLength\":" + std::to_string(enc.size()) +
+            ",\"byteStride\":" + std::to_string(stride) + ",\"mode\":\"" + mode +
+            "\",\"count\":" + (count_override.empty() ? std::to_string(count) : count_override);
         if (filter != "NONE") ext += ",\"filter\":\"" + filter + "\"";
         std::string view = "{\"buffer\":1,\"byteOffset\":" + std::to_string(m_fallback) +
                            ",\"byteLength\":" + std::to_string(count * stride);
@@ -72,12 +73,13 @@ public:
     }
     std::string write(const ScratchDir& dir, const char* name, const std::string& members,
                       BufferStorage storage, size_t fallback_length = 0) {
-        b.add_buffer_json("{\"byteLength\":" +
-                          std::to_string(fallback_length ? fallback_length : m_fallback) +
-                          ",\"extensions\":{\"EXT_meshopt_compression\":{\"fallback\":true}}}");
-        const std::string ext = "\"extensionsUsed\":[\"EXT_meshopt_compression\","
-                                "\"KHR_mesh_quantization\"],\"extensionsRequired\":["
-                                "\"EXT_meshopt_compression\",\"KHR_mesh_quantization\"],";
+        b.add_buffer_json(
+            "{\"byteLength\":" + std::to_string(fallback_length ? fallback_length : m_fallback) +
+            ",\"extensions\":{\"EXT_meshopt_compression\":{\"fallback\":true}}}");
+        const std::string ext =
+            "\"extensionsUsed\":[\"EXT_meshopt_compression\","
+            "\"KHR_mesh_quantization\"],\"extensionsRequired\":["
+            "\"EXT_meshopt_compression\",\"KHR_mesh_quantization\"],";
         return b.write(dir, name, ext + members, storage);
     }
     GltfBuilder b;
@@ -90,7 +92,8 @@ private:
 // Filter inputs: 4 floats per vector.
 std::vector<float> padded(const std::vector<float>& v3) {
     std::vector<float> out;
-    for (size_t i = 0; i < v3.size(); i += 3) out.insert(out.end(), {v3[i], v3[i + 1], v3[i + 2], 0});
+    for (size_t i = 0; i < v3.size(); i += 3)
+        out.insert(out.end(), {v3[i], v3[i + 1], v3[i + 2], 0});
     return out;
 }
 
@@ -111,21 +114,24 @@ std::string grid_primitives(MeshoptWriter& w, const ReferenceGrid& g) {
     auto acc = [&](int view, int type, const char* t, const char* extra = "") {
         return std::to_string(w.b.add_accessor(view, 0, type, t, n, extra));
     };
-    const std::string pos = acc(w.add(as_bytes(g.positions), n, 12, "ATTRIBUTES"), test::kFloat, "VEC3");
+    const std::string pos =
+        acc(w.add(as_bytes(g.positions), n, 12, "ATTRIBUTES"), test::kFloat, "VEC3");
     const std::string nor = acc(w.add(as_bytes(nrm), n, 4, "ATTRIBUTES", "OCTAHEDRAL"), test::kByte,
                                 "VEC3", "\"normalized\":true");
     const std::string tng = acc(w.add(as_bytes(tan), n, 8, "ATTRIBUTES", "OCTAHEDRAL"),
                                 test::kShort, "VEC4", "\"normalized\":true");
-    const std::string t0 = acc(w.add(as_bytes(uv0), n, 8, "ATTRIBUTES", "EXPONENTIAL"), test::kFloat, "VEC2");
+    const std::string t0 =
+        acc(w.add(as_bytes(uv0), n, 8, "ATTRIBUTES", "EXPONENTIAL"), test::kFloat, "VEC2");
     const std::string t1 = acc(w.add(as_bytes(g.uv1), n, 8, "ATTRIBUTES"), test::kFloat, "VEC2");
-    const std::string c0 = acc(w.add(col, n, 4, "ATTRIBUTES"), test::kUByte, "VEC4", "\"normalized\":true");
-    const int tri = w.b.add_accessor(w.add(as_bytes(g.indices), ni, 4, "TRIANGLES"), 0,
-                                     test::kUInt, "SCALAR", ni);
-    const int seq = w.b.add_accessor(w.add(as_bytes(g.indices), ni, 2, "INDICES"), 0,
-                                     test::kUShort, "SCALAR", ni);
-    const std::string attrs = "{\"POSITION\":" + pos + ",\"NORMAL\":" + nor + ",\"TANGENT\":" +
-                              tng + ",\"TEXCOORD_0\":" + t0 + ",\"TEXCOORD_1\":" + t1 +
-                              ",\"COLOR_0\":" + c0 + "}";
+    const std::string c0 =
+        acc(w.add(col, n, 4, "ATTRIBUTES"), test::kUByte, "VEC4", "\"normalized\":true");
+    const int tri = w.b.add_accessor(w.add(as_bytes(g.indices), ni, 4, "TRIANGLES"), 0, test::kUInt,
+                                     "SCALAR", ni);
+    const int seq = w.b.add_accessor(w.add(as_bytes(g.indices), ni, 2, "INDICES"), 0, test::kUShort,
+                                     "SCALAR", ni);
+    const std::string attrs = "{\"POSITION\":" + pos + ",\"NORMAL\":" + nor +
+                              ",\"TANGENT\":" + tng + ",\"TEXCOORD_0\":" + t0 +
+                              ",\"TEXCOORD_1\":" + t1 + ",\"COLOR_0\":" + c0 + "}";
     return "{\"attributes\":" + attrs + ",\"indices\":" + std::to_string(tri) +
            "},{\"attributes\":" + attrs + ",\"indices\":" + std::to_string(seq) + "}";
 }
@@ -138,8 +144,8 @@ TEST_P(MeshoptRoundTrip, SameGeometryWithinFilterQuantisation) {
     MeshoptWriter w;
     const std::string prims = grid_primitives(w, g);
     const bool glb = GetParam() == BufferStorage::Glb;
-    const Scene s = load_gltf(
-        w.write(dir, glb ? "m.glb" : "m.gltf", test::one_mesh_scene(prims), GetParam()));
+    const Scene s =
+        load_gltf(w.write(dir, glb ? "m.glb" : "m.gltf", test::one_mesh_scene(prims), GetParam()));
     ASSERT_EQ(s.meshes.size(), 2u);
     // The codecs are lossless, the filters not. Octahedral in K bits: half a step,
     // 0.5 / (2^(K-1) - 1), on each octahedron coordinate, times at most 2 for the map's
@@ -176,8 +182,9 @@ TEST(GltfMeshopt, QuaternionFilterRotations) {
     ScratchDir dir;
     MeshoptWriter w;
     const ReferenceGrid g = test::make_reference_grid(3);
-    const int pos = w.b.add_accessor(w.add(as_bytes(g.positions), g.vertex_count(), 12, "ATTRIBUTES"),
-                                     0, test::kFloat, "VEC3", g.vertex_count());
+    const int pos =
+        w.b.add_accessor(w.add(as_bytes(g.positions), g.vertex_count(), 12, "ATTRIBUTES"), 0,
+                         test::kFloat, "VEC3", g.vertex_count());
     const size_t count = 16;
     std::vector<float> q;
     for (size_t i = 0; i < count; ++i) {
@@ -193,7 +200,8 @@ TEST(GltfMeshopt, QuaternionFilterRotations) {
     const std::string members =
         "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
         "}}]}],\"nodes\":[{\"mesh\":0,\"extensions\":{\"EXT_mesh_gpu_instancing\":{"
-        "\"attributes\":{\"ROTATION\":" + std::to_string(rot) + "}}}}],\"scenes\":[{\"nodes\":[0]}]";
+        "\"attributes\":{\"ROTATION\":" +
+        std::to_string(rot) + "}}}}],\"scenes\":[{\"nodes\":[0]}]";
     std::string path = w.write(dir, "q.glb", members, BufferStorage::Glb);
     const Scene s = load_gltf(path);
     ASSERT_EQ(s.instances.size(), count);
@@ -228,9 +236,10 @@ std::string quad_file(const ScratchDir& dir, MeshoptWriter& w, const char* name,
     const ReferenceGrid g = test::make_reference_grid(2);
     const int v = w.add(as_bytes(g.positions), 4, 12, "ATTRIBUTES", "NONE", count_override);
     const int pos = w.b.add_accessor(v, 0, test::kFloat, "VEC3", 4);
-    return w.write(dir, name,
-                   test::one_mesh_scene("{\"attributes\":{\"POSITION\":" + std::to_string(pos) + "}}"),
-                   BufferStorage::Glb, fallback_length);
+    return w.write(
+        dir, name,
+        test::one_mesh_scene("{\"attributes\":{\"POSITION\":" + std::to_string(pos) + "}}"),
+        BufferStorage::Glb, fallback_length);
 }
 
 TEST(GltfMeshopt, CorruptStreamNamesTheBufferView) {

@@ -20,8 +20,8 @@ struct ReferenceGrid {
 };
 
 // n x n vertices over [-1, 1]^2, z = 0.3 sin(2x) cos(3y); the normals and tangents of that
-// surface, uv0 in [0.05, 0.95]^2 (not dyadic), uv1 in [0, 2] x [-1, 0], colours (u, v, 1 - u, 1), and the
-// bitangent sign alternating by row so that a lost w shows.
+// surface, uv0 in [0.05, 0.95]^2 (not dyadic), uv1 in [0, 2] x [-1, 0], colours (u, v, 1 - u, 1),
+// and the bitangent sign alternating by row so that a lost w shows.
 inline ReferenceGrid make_reference_grid(int n = 9) {
     ReferenceGrid g;
     for (int j = 0; j < n; ++j)
@@ -32,8 +32,7 @@ inline ReferenceGrid make_reference_grid(int n = 9) {
             const float dzdy = -0.9f * std::sin(2 * x) * std::sin(3 * y);
             const float nl = std::sqrt(dzdx * dzdx + dzdy * dzdy + 1);
             const float tl = std::sqrt(1 + dzdx * dzdx);
-            g.positions.insert(g.positions.end(),
-                               {x, y, 0.3f * std::sin(2 * x) * std::cos(3 * y)});
+            g.positions.insert(g.positions.end(), {x, y, 0.3f * std::sin(2 * x) * std::cos(3 * y)});
             g.normals.insert(g.normals.end(), {-dzdx / nl, -dzdy / nl, 1 / nl});
             g.uv0.insert(g.uv0.end(), {0.05f + 0.9f * u, 0.05f + 0.9f * v});
             g.uv1.insert(g.uv1.end(), {2 * u, -v});
@@ -76,12 +75,14 @@ inline GridTolerance expect_matches_grid(const TriangleMesh& m, const ReferenceG
     std::vector<bool> used(tris, false);
     for (size_t t = 0; t < tris; ++t) {
         const Vec3 c = (m.positions[m.indices[3 * t]] + m.positions[m.indices[3 * t + 1]] +
-                        m.positions[m.indices[3 * t + 2]]) / 3.0f;
+                        m.positions[m.indices[3 * t + 2]]) /
+                       3.0f;
         size_t best = 0;
         float best_d = 1e30f;
         for (size_t r = 0; r < tris; ++r) {
             const Vec3 rc = (ref_pos(g.indices[3 * r]) + ref_pos(g.indices[3 * r + 1]) +
-                             ref_pos(g.indices[3 * r + 2])) / 3.0f;
+                             ref_pos(g.indices[3 * r + 2])) /
+                            3.0f;
             const float d = length(rc - c);
             if (d < best_d) best_d = d, best = r;
         }
