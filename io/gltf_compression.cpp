@@ -106,34 +106,39 @@ bool uses_compression(const json& gltf) {
 
 std::optional<CompressedGltf> prepare_compressed_gltf(const std::string& path, bool binary) {
     std::ifstream in(path, std::ios::binary);
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (!in.good() && !in.eof()) return std::nullopt;
-    // Cheap test first: most files name neither extension.
-    if (bytes.find("_compression") == std::string::npos) return std::nullopt;
-
-    // GLB framing (glTF 2.0, section 4.4): a 12-byte header, then the JSON chunk.
-    size_t json_begin = 0, json_size = bytes.size();
+    auto read = [&](size_t n) {
+        std::string s(n, '\0');
+        in.read(s.data(), std::streamsize(n));
+        s.resize(size_t(in.gcount()));
+        return s;
+    };
+    // Only the JSON is read before deciding: for GLB (glTF 2.0, section 4.4) the 12-byte
+    // header and the JSON chunk's; images and buffers only for files we rewrite.
+    std::string head, text;
     if (binary) {
-        if (bytes.size() < 20 || read_u32(bytes, 4) != 2 || read_u32(bytes, 16) != 0x4E4F534A)
+        head = read(20);
+        if (head.size() < 20 || read_u32(head, 4) != 2 || read_u32(head, 16) != 0x4E4F534A)
             return std::nullopt;
-        json_begin = 20;
-        json_size = read_u32(bytes, 12);
-        if (json_size > bytes.size() - 20) return std::nullopt;
+        text = read(read_u32(head, 12));
+        if (text.size() != read_u32(head, 12)) return std::nullopt;
+    } else {
+        text = std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     }
-    json gltf = json::parse(bytes.begin() + long(json_begin),
-                            bytes.begin() + long(json_begin + json_size), nullptr, false);
+    if (text.find("_compression") == std::string::npos) return std::nullopt;  // most files
+    json gltf = json::parse(text, nullptr, false);
     if (gltf.is_discarded() || !gltf.is_object() || !uses_compression(gltf)) return std::nullopt;
 
     CompressedGltf out;
     out.fixups = relax(gltf);
-    std::string text = gltf.dump();
+    text = gltf.dump();
     if (!binary) {
         out.bytes = std::move(text);
         return out;
     }
     while (text.size() % 4 != 0) text += ' ';  // JSON chunks pad with spaces (4.4.3.1)
-    const std::string rest = bytes.substr(json_begin + json_size);  // BIN and later chunks
-    out.bytes = bytes.substr(0, 8);
+    const std::string rest((std::istreambuf_iterator<char>(in)),
+                           std::istreambuf_iterator<char>());  // BIN and later chunks
+    out.bytes = head.substr(0, 8);
     append_u32(out.bytes, uint32_t(12 + 8 + text.size() + rest.size()));
     append_u32(out.bytes, uint32_t(text.size()));
     append_u32(out.bytes, 0x4E4F534A);
