@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.h"
 #include "io/gltf_loader.h"
@@ -169,6 +170,78 @@ TEST(GltfDraco, UnsignedShortIndices) {
     ASSERT_EQ(s.meshes.size(), 1u);
     EXPECT_EQ(s.meshes[0].triangle_count(), 32u);
     for (uint32_t i : s.meshes[0].indices) EXPECT_LT(i, s.meshes[0].positions.size());
+}
+
+// Integer attributes keep their values: TEXCOORD_0 as normalized unsigned shorts and
+// COLOR_0 as normalized unsigned bytes in both Draco and the accessors (the
+// KHR_mesh_quantization and JOINTS_n / WEIGHTS_n path: no float in between).
+TEST(GltfDraco, IntegerAttributesExact) {
+    ScratchDir dir;
+    const ReferenceGrid g = test::make_reference_grid(5);
+    const size_t nv = g.vertex_count();
+    std::vector<uint16_t> uv(nv * 2);
+    std::vector<uint8_t> col(nv * 4);
+    for (size_t i = 0; i < uv.size(); ++i) uv[i] = uint16_t(std::lround(g.uv0[i] * 65535));
+    for (size_t i = 0; i < col.size(); ++i) col[i] = uint8_t(std::lround(g.colors[i] * 255));
+    draco::TriangleSoupMeshBuilder b;
+    const int faces = int(g.indices.size() / 3);
+    b.Start(faces);
+    using T = draco::GeometryAttribute;
+    const int pos = b.AddAttribute(T::POSITION, 3, draco::DT_FLOAT32);
+    const int tex = b.AddAttribute(T::TEX_COORD, 2, draco::DT_UINT16);
+    const int rgba = b.AddAttribute(T::COLOR, 4, draco::DT_UINT8);
+    for (int f = 0; f < faces; ++f) {
+        const uint32_t* c = &g.indices[3 * size_t(f)];
+        const draco::FaceIndex fi{uint32_t(f)};
+        b.SetAttributeValuesForFace(pos, fi, &g.positions[3 * c[0]], &g.positions[3 * c[1]],
+                                    &g.positions[3 * c[2]]);
+        b.SetAttributeValuesForFace(tex, fi, &uv[2 * c[0]], &uv[2 * c[1]], &uv[2 * c[2]]);
+        b.SetAttributeValuesForFace(rgba, fi, &col[4 * c[0]], &col[4 * c[1]], &col[4 * c[2]]);
+    }
+    std::unique_ptr<draco::Mesh> mesh = b.Finalize();
+    ASSERT_TRUE(mesh);
+    draco::Encoder enc;
+    enc.SetAttributeQuantization(T::POSITION, kPositionBits);
+    draco::EncoderBuffer out;
+    ASSERT_TRUE(enc.EncodeMeshToBuffer(*mesh, &out).ok());
+
+    GltfBuilder gb;
+    gb.bytes().assign(out.data(), out.data() + out.size());
+    gb.add_view(0, out.size());
+    const size_t n = mesh->num_points();
+    const int idx = gb.add_accessor(-1, 0, test::kUInt, "SCALAR", mesh->num_faces() * 3);
+    const int a_pos = gb.add_accessor(-1, 0, test::kFloat, "VEC3", n);
+    const int a_tex = gb.add_accessor(-1, 0, test::kUShort, "VEC2", n, "\"normalized\":true");
+    const int a_col = gb.add_accessor(-1, 0, test::kUByte, "VEC4", n, "\"normalized\":true");
+    auto id = [&](int att) { return std::to_string(mesh->attribute(att)->unique_id()); };
+    const std::string prim =
+        "{\"attributes\":{\"POSITION\":" + std::to_string(a_pos) +
+        ",\"TEXCOORD_0\":" + std::to_string(a_tex) + ",\"COLOR_0\":" + std::to_string(a_col) +
+        "},\"indices\":" + std::to_string(idx) +
+        ",\"extensions\":{\"KHR_draco_mesh_compression\":{\"bufferView\":0,\"attributes\":{"
+        "\"POSITION\":" +
+        id(pos) + ",\"TEXCOORD_0\":" + id(tex) + ",\"COLOR_0\":" + id(rgba) + "}}}}";
+    const std::string ext =
+        "\"extensionsUsed\":[\"KHR_draco_mesh_compression\"],"
+        "\"extensionsRequired\":[\"KHR_draco_mesh_compression\"],";
+    const Scene s =
+        load_gltf(gb.write(dir, "int.glb", ext + test::one_mesh_scene(prim), BufferStorage::Glb));
+    ASSERT_EQ(s.meshes.size(), 1u);
+    const TriangleMesh& m = s.meshes[0];
+    ASSERT_EQ(m.uv0.size(), m.positions.size());
+    ASSERT_EQ(m.colors.size(), m.positions.size());
+    for (size_t v = 0; v < m.positions.size(); ++v) {
+        size_t r = 0;  // the reference vertex nearest to this one (positions are quantised)
+        for (size_t q = 1; q < nv; ++q)
+            if (length(m.positions[v] -
+                       Vec3{g.positions[3 * q], g.positions[3 * q + 1], g.positions[3 * q + 2]}) <
+                length(m.positions[v] -
+                       Vec3{g.positions[3 * r], g.positions[3 * r + 1], g.positions[3 * r + 2]}))
+                r = q;
+        for (int a = 0; a < 2; ++a) EXPECT_EQ(m.uv0[v][a], float(uv[2 * r + size_t(a)]) / 65535);
+        for (int a = 0; a < 4; ++a)
+            EXPECT_EQ(m.colors[v][a], float(col[4 * r + size_t(a)]) / 255) << v << " " << a;
+    }
 }
 
 void expect_error(const std::string& path, const std::string& expected) {
