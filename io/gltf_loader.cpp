@@ -1,6 +1,6 @@
-// The glTF entry point: file checks, tinygltf parsing (images captured undecoded) and
-// compressed geometry decoded (gltf_compression.h), extension policy, then meshes, materials and the node tree (gltf_mesh.cpp,
-// gltf_material.cpp, gltf_nodes.cpp).
+// The glTF entry point: file checks, tinygltf parsing (images captured undecoded, compressed
+// geometry decoded: gltf_compression.h), extension policy, then meshes, materials and the
+// node tree (gltf_mesh.cpp, gltf_material.cpp, gltf_nodes.cpp).
 #include "io/gltf_loader.h"
 
 #include <cctype>
@@ -25,9 +25,9 @@ namespace {
 
 // Extensions whose meaning we implement.
 const char* const kSupportedExtensions[] = {
+    "KHR_draco_mesh_compression",
     "KHR_lights_punctual",
     "KHR_materials_anisotropy",
-    "KHR_draco_mesh_compression",
     "KHR_materials_clearcoat",
     "KHR_materials_diffuse_transmission",
     "KHR_materials_dispersion",
