@@ -5,7 +5,9 @@
 // those two things in the JSON, let tinygltf parse, undo them, then decode.
 #include "io/gltf_compression.h"
 
+#include <algorithm>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
@@ -106,8 +108,11 @@ bool uses_compression(const json& gltf) {
 
 std::optional<CompressedGltf> prepare_compressed_gltf(const std::string& path, bool binary) {
     std::ifstream in(path, std::ios::binary);
+    std::error_code ec;
+    const uint64_t file_size = std::filesystem::file_size(path, ec);
+    if (ec) return std::nullopt;
     auto read = [&](size_t n) {
-        std::string s(n, '\0');
+        std::string s(std::min<uint64_t>(n, file_size), '\0');  // a header may claim 4 GB
         in.read(s.data(), std::streamsize(n));
         s.resize(size_t(in.gcount()));
         return s;
