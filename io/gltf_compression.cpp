@@ -143,6 +143,12 @@ std::optional<CompressedGltf> prepare_compressed_gltf(const std::string& path, b
     while (text.size() % 4 != 0) text += ' ';  // JSON chunks pad with spaces (4.4.3.1)
     const std::string rest((std::istreambuf_iterator<char>(in)),
                            std::istreambuf_iterator<char>());  // BIN and later chunks
+    // Only well-framed files are rewritten (a consistent header length, a BIN chunk inside
+    // the file): with a recomputed header tinygltf would trust a BIN length past the end.
+    if (read_u32(head, 8) != file_size ||
+        (rest.size() >= 8 && read_u32(rest, 0) > rest.size() - 8) ||
+        (!rest.empty() && rest.size() < 8))
+        return std::nullopt;
     out.bytes = head.substr(0, 8);
     append_u32(out.bytes, uint32_t(12 + 8 + text.size() + rest.size()));
     append_u32(out.bytes, uint32_t(text.size()));
