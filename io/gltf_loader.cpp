@@ -1,6 +1,6 @@
-// The glTF entry point: file checks, tinygltf parsing (images captured undecoded),
-// extension policy, then meshes, materials and the node tree (gltf_mesh.cpp,
-// gltf_material.cpp, gltf_nodes.cpp).
+// The glTF entry point: file checks, tinygltf parsing (images captured undecoded, compressed
+// geometry decoded: gltf_compression.h), extension policy, then meshes, materials and the
+// node tree (gltf_mesh.cpp, gltf_material.cpp, gltf_nodes.cpp).
 #include "io/gltf_loader.h"
 
 #include <cctype>
@@ -9,9 +9,11 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "core/log.h"
 #include "io/gltf_animation.h"
+#include "io/gltf_compression.h"
 #include "io/gltf_context.h"
 #include "io/gltf_node_motion.h"
 #include "io/gltf_variants.h"
@@ -23,6 +25,7 @@ namespace {
 
 // Extensions whose meaning we implement.
 const char* const kSupportedExtensions[] = {
+    "KHR_draco_mesh_compression",
     "KHR_lights_punctual",
     "KHR_materials_anisotropy",
     "KHR_materials_clearcoat",
@@ -39,9 +42,11 @@ const char* const kSupportedExtensions[] = {
     "KHR_materials_variants",
     "KHR_materials_volume",
     "KHR_mesh_quantization",
+    "KHR_meshopt_compression",
     "KHR_texture_transform",
     "EXT_cameras_sensor",
     "EXT_mesh_gpu_instancing",
+    "EXT_meshopt_compression",
     "EXT_texture_webp"};
 
 bool is_supported(const std::string& name) {
@@ -145,17 +150,30 @@ tinygltf::Model parse(const std::string& path) {
     tinygltf::Model model;
     std::string err, warn;
     bool ok = false;
+    const std::optional<CompressedGltf> compressed = prepare_compressed_gltf(path, binary);
     try {
-        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                    : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+        if (compressed) {
+            // tinygltf's base directory for external buffers and images, as
+            // Load*FromFile would compute it.
+            const std::string dir = std::filesystem::path(path).parent_path().string();
+            const std::string& bytes = compressed->bytes;
+            ok = binary ? loader.LoadBinaryFromMemory(
+                              &model, &err, &warn,
+                              reinterpret_cast<const unsigned char*>(bytes.data()),
+                              unsigned(bytes.size()), dir)
+                        : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(),
+                                                     unsigned(bytes.size()), dir);
+        } else {
+            ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                        : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+        }
     } catch (const std::exception& e) {
         // tinygltf throws on some malformed input (e.g. an empty data: URI).
         throw SceneError(path + ": " + one_line(e.what()));
     }
     log_lines(path, warn);
-    // tinygltf reads extensionsRequired before buffers and accessors, which a compression
-    // extension (Draco, meshopt) leaves without data; name the extension, not the
-    // accessor it broke.
+    // tinygltf reads extensionsRequired before buffers and accessors, which an unknown
+    // extension may leave without data; name the extension, not the accessor it broke.
     if (!ok)
         for (const std::string& name : model.extensionsRequired)
             if (!is_supported(name))
@@ -163,6 +181,7 @@ tinygltf::Model parse(const std::string& path) {
                                  "'");
     if (!ok) throw SceneError(path + ": " + (err.empty() ? "cannot parse glTF" : one_line(err)));
     log_lines(path, err);  // tinygltf reports some recoverable problems as errors
+    if (compressed) decode_compressed_gltf(model, compressed->fixups, path);
     return model;
 }
 

@@ -10,6 +10,7 @@ packages=(
     libembree-dev libtbb-dev
     libopenimageio-dev openimageio-tools libopencolorio-dev
     libtinygltf-dev nlohmann-json3-dev libstb-dev
+    libdraco-dev libmeshoptimizer-dev
     libcli11-dev libgtest-dev libbenchmark-dev
 )
 if [ "${1:-}" = "--test" ]; then

@@ -117,10 +117,10 @@ TEST(GltfErrors, ZeroPositions) {
 
 TEST(GltfErrors, UnsupportedRequiredExtension) {
     ScratchDir dir;
-    const std::string members = R"("extensionsUsed": ["KHR_draco_mesh_compression"],
-        "extensionsRequired": ["KHR_draco_mesh_compression"],)";
+    const std::string members = R"("extensionsUsed": ["EXT_lights_image_based"],
+        "extensionsRequired": ["EXT_lights_image_based"],)";
     expect_error(write_triangle(dir, "", members),
-                 "extensionsRequired: unsupported extension 'KHR_draco_mesh_compression'");
+                 "extensionsRequired: unsupported extension 'EXT_lights_image_based'");
 }
 
 TEST(GltfErrors, WrongPositionType) {

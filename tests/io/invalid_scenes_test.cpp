@@ -46,7 +46,7 @@ const InvalidScene kInvalidScenes[] = {
     {"node-cycle.gltf", "nodes[0]: reached twice in the node tree"},
     {"skin-joint-out-of-range.gltf", "skins[0]: joint node index 5 out of range (1 nodes)"},
     {"unsupported-extension.gltf",
-     "extensionsRequired: unsupported extension 'KHR_draco_mesh_compression'"},
+     "extensionsRequired: unsupported extension 'EXT_lights_image_based'"},
     {"variant-bad-material.gltf",
      "meshes[0].primitives[0].extensions.KHR_materials_variants.mappings[0]: material index 3 "
      "out of range (1 materials)"},

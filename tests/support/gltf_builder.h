@@ -90,6 +90,16 @@ public:
         return int(m_accessors.size()) - 1;
     }
     std::vector<uint8_t>& bytes() { return m_buffer; }
+    // A bufferView given as JSON (e.g. with extensions); returns its index.
+    int add_view_json(const std::string& view) {
+        m_views.push_back(view);
+        return int(m_views.size()) - 1;
+    }
+    // Buffers after buffer 0 (which holds bytes()), as JSON; returns the new index.
+    int add_buffer_json(const std::string& buffer) {
+        m_more_buffers.push_back(buffer);
+        return int(m_more_buffers.size());
+    }
 
     // The whole file's JSON: `members` (meshes, nodes, ...) plus asset, buffers,
     // bufferViews and accessors. `bin_uri` names the external buffer file.
@@ -100,7 +110,9 @@ public:
             buffer += ",\"uri\":\"data:application/octet-stream;base64," + base64(m_buffer) + "\"";
         else if (storage == BufferStorage::ExternalBin)
             buffer += ",\"uri\":\"" + bin_uri + "\"";
-        std::string j = "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[" + buffer + "}]";
+        std::string j = "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[" + buffer + "}";
+        for (const std::string& b : m_more_buffers) j += "," + b;
+        j += "]";
         j += ",\"bufferViews\":[" + join(m_views) + "],\"accessors\":[" + join(m_accessors) + "]";
         if (!members.empty()) j += "," + members;
         return j + "}";
@@ -145,7 +157,7 @@ private:
         return s;
     }
     std::vector<uint8_t> m_buffer;
-    std::vector<std::string> m_views, m_accessors;
+    std::vector<std::string> m_views, m_accessors, m_more_buffers;
 };
 
 // A one-node scene around mesh 0, for the common case.

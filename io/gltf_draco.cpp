@@ -1,0 +1,218 @@
+// KHR_draco_mesh_compression through libdraco (KhronosGroup/glTF, extensions/2.0/Khronos/
+// KHR_draco_mesh_compression): the extension's bufferView is one Draco mesh whose
+// attributes, by unique id, become the primitive's accessors, converted to the accessor's
+// componentType as the JSON declares it. Draco dequantises (positions, texture
+// coordinates, normals) while decoding; morph targets are never compressed (the spec).
+#include "io/gltf_draco.h"
+
+#include <draco/compression/decode.h>
+
+#include <cstring>
+#include <map>
+
+#include "core/error.h"
+
+namespace penumbra {
+
+namespace {
+
+int components(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR:
+            return 1;
+        case TINYGLTF_TYPE_VEC2:
+            return 2;
+        case TINYGLTF_TYPE_VEC3:
+            return 3;
+        case TINYGLTF_TYPE_VEC4:
+            return 4;
+        default:
+            return 0;  // matrices are no vertex attributes
+    }
+}
+
+template <typename T>
+bool convert(const draco::PointAttribute& att, uint32_t points, int n, std::vector<uint8_t>& out) {
+    const size_t begin = out.size();
+    out.resize(begin + size_t(points) * size_t(n) * sizeof(T));
+    T value[4];
+    for (uint32_t i = 0; i < points; ++i) {
+        if (!att.ConvertValue<T>(att.mapped_index(draco::PointIndex(i)), int8_t(n), value))
+            return false;
+        std::memcpy(out.data() + begin + size_t(i) * size_t(n) * sizeof(T), value,
+                    size_t(n) * sizeof(T));
+    }
+    return true;
+}
+
+// Appends `points` values of `att` as `component_type` (glTF's enum); false when the type
+// is not a vertex attribute type or a value does not fit it.
+bool append_attribute(const draco::PointAttribute& att, uint32_t points, int n, int component_type,
+                      std::vector<uint8_t>& out) {
+    switch (component_type) {
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            return convert<float>(att, points, n, out);
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+            return convert<int8_t>(att, points, n, out);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return convert<uint8_t>(att, points, n, out);
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+            return convert<int16_t>(att, points, n, out);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return convert<uint16_t>(att, points, n, out);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+            return convert<uint32_t>(att, points, n, out);
+        default:
+            return false;
+    }
+}
+
+template <typename T>
+void append_indices(const draco::Mesh& mesh, std::vector<uint8_t>& out) {
+    const size_t begin = out.size();
+    out.resize(begin + size_t(mesh.num_faces()) * 3 * sizeof(T));
+    for (uint32_t f = 0; f < mesh.num_faces(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const T index = T(mesh.face(draco::FaceIndex(f))[k].value());
+            std::memcpy(out.data() + begin + (size_t(f) * 3 + size_t(k)) * sizeof(T), &index,
+                        sizeof(T));
+        }
+}
+
+}  // namespace
+
+void decode_draco(tinygltf::Model& model, const std::string& file) {
+    const int out_buffer = int(model.buffers.size());
+    std::vector<uint8_t> out;
+    std::map<int, int> decoded_from;  // accessor -> Draco bufferView that filled it
+
+    for (size_t m = 0; m < model.meshes.size(); ++m)
+        for (size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
+            tinygltf::Primitive& prim = model.meshes[m].primitives[p];
+            const auto found = prim.extensions.find("KHR_draco_mesh_compression");
+            if (found == prim.extensions.end()) continue;
+            const std::string where = file + ": meshes[" + std::to_string(m) + "].primitives[" +
+                                      std::to_string(p) + "]: KHR_draco_mesh_compression";
+            auto fail = [&](const std::string& problem) {
+                throw SceneError(where + ": " + problem);
+            };
+            const tinygltf::Value& ext = found->second;
+            if (!ext.IsObject() || !ext.Get("bufferView").IsNumber() ||
+                !ext.Get("attributes").IsObject())
+                fail("bufferView (a number) and attributes (an object) must be given");
+            // Only triangle lists: Draco's point clouds are no surfaces, and the
+            // extension allows no strips or fans.
+            if (prim.mode != TINYGLTF_MODE_TRIANGLES) continue;
+
+            const int source = ext.Get("bufferView").GetNumberAsInt();
+            if (source < 0 || size_t(source) >= model.bufferViews.size())
+                fail("bufferView index " + std::to_string(source) + " out of range");
+            const tinygltf::BufferView& view = model.bufferViews[size_t(source)];
+            if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size() ||
+                view.byteOffset > model.buffers[size_t(view.buffer)].data.size() ||
+                view.byteLength > model.buffers[size_t(view.buffer)].data.size() - view.byteOffset)
+                fail("bufferViews[" + std::to_string(source) + "] lies outside its buffer");
+
+            draco::DecoderBuffer bytes;
+            bytes.Init(reinterpret_cast<const char*>(
+                           model.buffers[size_t(view.buffer)].data.data() + view.byteOffset),
+                       view.byteLength);
+            draco::Decoder decoder;
+            auto decoded = decoder.DecodeMeshFromBuffer(&bytes);
+            if (!decoded.ok()) fail("cannot decode (" + decoded.status().error_msg_string() + ")");
+            const std::unique_ptr<draco::Mesh> mesh = std::move(decoded).value();
+            const uint32_t points = mesh->num_points();
+
+            // Each accessor once, into its own bufferView of the new buffer.
+            auto claim = [&](int accessor, const std::string& semantic, uint32_t count) {
+                if (accessor < 0 || size_t(accessor) >= model.accessors.size())
+                    fail(semantic + " accessor index " + std::to_string(accessor) +
+                         " out of range");
+                const auto seen = decoded_from.find(accessor);
+                if (seen != decoded_from.end()) {
+                    if (seen->second != source)
+                        fail(semantic + " accessor " + std::to_string(accessor) +
+                             " is decoded by two Draco primitives");
+                    return false;
+                }
+                if (model.accessors[size_t(accessor)].count != count)
+                    fail(semantic + " accessor " + std::to_string(accessor) + " declares " +
+                         std::to_string(model.accessors[size_t(accessor)].count) +
+                         " elements, the Draco mesh has " + std::to_string(count));
+                decoded_from[accessor] = source;
+                while (out.size() % 4 != 0) out.push_back(0);
+                return true;
+            };
+            auto finish = [&](int accessor, size_t begin) {
+                tinygltf::BufferView v;
+                v.buffer = out_buffer;
+                v.byteOffset = begin;
+                v.byteLength = out.size() - begin;
+                model.bufferViews.push_back(v);
+                model.accessors[size_t(accessor)].bufferView = int(model.bufferViews.size()) - 1;
+                model.accessors[size_t(accessor)].byteOffset = 0;
+                model.accessors[size_t(accessor)].sparse = {};
+            };
+
+            if (prim.indices >= 0 && claim(prim.indices, "indices", mesh->num_faces() * 3)) {
+                const size_t begin = out.size();
+                switch (model.accessors[size_t(prim.indices)].componentType) {
+                    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                        if (points > 256)
+                            fail("indices: " + std::to_string(points) +
+                                 " points need "
+                                 "more than unsigned byte indices");
+                        append_indices<uint8_t>(*mesh, out);
+                        break;
+                    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+                        if (points > 65536)
+                            fail("indices: " + std::to_string(points) +
+                                 " points "
+                                 "need more than unsigned short indices");
+                        append_indices<uint16_t>(*mesh, out);
+                        break;
+                    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+                        append_indices<uint32_t>(*mesh, out);
+                        break;
+                    default:
+                        fail("indices accessor has no unsigned integer componentType");
+                }
+                finish(prim.indices, begin);
+            }
+
+            const tinygltf::Value& attributes = ext.Get("attributes");
+            for (const std::string& name : attributes.Keys()) {
+                const auto target = prim.attributes.find(name);
+                if (target == prim.attributes.end())
+                    fail("attribute " + name + " is not among the primitive's attributes");
+                if (!attributes.Get(name).IsNumber())
+                    fail("attribute " + name + ": the Draco id must be a number");
+                const int id = attributes.Get(name).GetNumberAsInt();
+                const draco::PointAttribute* att = mesh->GetAttributeByUniqueId(uint32_t(id));
+                if (!att)
+                    fail("attribute " + name + ": the Draco mesh has no id " + std::to_string(id));
+                if (!claim(target->second, name, points)) continue;
+                const tinygltf::Accessor& a = model.accessors[size_t(target->second)];
+                const int n = components(a.type);
+                if (n == 0 || att->num_components() != n)
+                    fail("attribute " + name + ": the accessor has " + std::to_string(n) +
+                         " components, Draco id " + std::to_string(id) + " has " +
+                         std::to_string(int(att->num_components())));
+                const size_t begin = out.size();
+                if (!append_attribute(*att, points, n, a.componentType, out))
+                    fail("attribute " + name +
+                         ": Draco's values do not convert to the "
+                         "accessor's componentType " +
+                         std::to_string(a.componentType));
+                finish(target->second, begin);
+            }
+        }
+
+    if (decoded_from.empty()) return;
+    tinygltf::Buffer buffer;
+    buffer.name = "KHR_draco_mesh_compression (decoded)";
+    buffer.data = std::move(out);
+    model.buffers.push_back(std::move(buffer));
+}
+
+}  // namespace penumbra
