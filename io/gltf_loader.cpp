@@ -3,6 +3,7 @@
 // gltf_material.cpp, gltf_nodes.cpp).
 #include "io/gltf_loader.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
@@ -13,6 +14,7 @@
 #include "core/log.h"
 #include "io/gltf_animation.h"
 #include "io/gltf_context.h"
+#include "io/gltf_deform.h"
 #include "io/gltf_node_motion.h"
 #include "io/gltf_signature.h"
 #include "io/gltf_variants.h"
@@ -90,15 +92,29 @@ std::string one_line(const std::string& text) {
     return out;
 }
 
+// tinygltf's warnings, one line per kind: repeats (one per element) are counted, not
+// printed again. It wrongly requires skins[].inverseBindMatrices, which is optional
+// (identity; glTF 2.0, section 5.28), so that line is dropped.
 void log_lines(const std::string& file, const std::string& text, bool strict) {
+    std::vector<std::pair<std::string, int>> lines;
     size_t start = 0;
     while (start < text.size()) {
         size_t end = text.find('\n', start);
         if (end == std::string::npos) end = text.size();
         const std::string line = one_line(text.substr(start, end - start));
-        if (!line.empty() && strict) throw SceneError(file + ": " + line + " [--strict]");
-        if (!line.empty()) LOG_WARNING(file << ": " << line);
         start = end + 1;
+        if (line.empty() || line == "'inverseBindMatrices' property is missing in Skin.") continue;
+        auto it = std::find_if(lines.begin(), lines.end(), [&](auto& l) { return l.first == line; });
+        if (it == lines.end())
+            lines.emplace_back(line, 1);
+        else
+            ++it->second;
+    }
+    for (const auto& [line, n] : lines) {
+        const std::string msg =
+            file + ": " + line + (n > 1 ? " (" + std::to_string(n) + " times)" : "");
+        if (strict) throw SceneError(msg + " [--strict]");
+        LOG_WARNING(msg);
     }
 }
 
@@ -216,6 +232,7 @@ Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
         load_nodes(ctx, scene_index, motion, origins, scene);
     else
         ctx.warn("scenes", "the file defines no scene; nothing will be rendered");
+    warn_unnormalized_skin_weights(ctx);
     return scene;
 }
 

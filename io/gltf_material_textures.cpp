@@ -115,8 +115,9 @@ int TextureTable::image_source(const tinygltf::Texture& gt, const std::string& e
     }
     if (gt.source == -1) {
         if (gt.extensions.count("KHR_texture_basisu"))
-            m_ctx.fail(el, "has only a KHR_texture_basisu (KTX2) source and no fallback source "
-                           "image; KTX2 cannot be decoded (no Basis Universal decoder)");
+            m_ctx.fail(el,
+                       "has only a KHR_texture_basisu (KTX2) source and no fallback source "
+                       "image; KTX2 cannot be decoded (no Basis Universal decoder)");
         m_ctx.fail(el, "has no source image");
     }
     m_ctx.check_index(el, "source", gt.source, m_ctx.model.images.size(), "images");
@@ -151,8 +152,8 @@ int TextureTable::image_index(int index, ImageEncoding encoding) {
         // Renderable without it: the textures using it are left out, so their materials
         // use their factors alone; one warning per image, whichever encodings use it.
         m_undecodable.insert(index);
-        m_ctx.warn(named, "cannot decode image: " + e.why() +
-                              "; the textures using it are ignored");
+        m_ctx.warn(named,
+                   "cannot decode image: " + e.why() + "; the textures using it are ignored");
         return -1;
     }
     img.name = external ? gi.uri : (gi.name.empty() ? el : gi.name);

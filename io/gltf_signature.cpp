@@ -45,8 +45,7 @@ void check_gltf_signature(const std::string& path) {
     if (i == head.size() && head.size() < 4096)
         throw SceneError(path + ": not a glTF file: it holds only whitespace");
     if (i == head.size()) return;  // more whitespace than we read: let the parser decide
-    throw SceneError(path + ": not a glTF file: begins with '" + first_word(head.substr(i)) +
-                     "'");
+    throw SceneError(path + ": not a glTF file: begins with '" + first_word(head.substr(i)) + "'");
 }
 
 }  // namespace penumbra

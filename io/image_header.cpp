@@ -52,7 +52,7 @@ ImageHeader jpeg_header(const std::vector<uint8_t>& b) {
         }
         i += 2;
         if (m == 0x01 || (m >= 0xD0 && m <= 0xD7)) continue;  // no length field
-        if (m == 0xD9 || m == 0xDA) break;                     // EOI or SOS before a SOF
+        if (m == 0xD9 || m == 0xDA) break;                    // EOI or SOS before a SOF
         if (i + 2 > b.size()) break;
         const uint32_t len = be16(&b[i]);
         if (len < 2) return refused(ImageFormat::Jpeg, "malformed JPEG segment length");
@@ -108,8 +108,8 @@ ImageHeader read_image_header(const std::vector<uint8_t>& b, bool allow_webp) {
         return refused(ImageFormat::Unknown,
                        allow_webp ? "not a PNG, JPEG or WebP image" : "not a PNG or JPEG image");
     if (h.problem.empty() && (h.width == 0 || h.height == 0))
-        h.problem = "header claims a " + std::to_string(h.width) + "x" +
-                    std::to_string(h.height) + " image";
+        h.problem = "header claims a " + std::to_string(h.width) + "x" + std::to_string(h.height) +
+                    " image";
     return h;
 }
 

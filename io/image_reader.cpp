@@ -69,8 +69,8 @@ Image decode_with(const std::vector<uint8_t>& bytes, const std::string& name, co
             throw ImageDecodeError(name, "empty image");
         // A corrupt header can claim any size; refuse rather than die allocating it.
         if (uint64_t(spec.width) * uint64_t(spec.height) > max_pixels)
-            throw ImageDecodeError(name, too_large(uint32_t(spec.width),
-                                                   uint32_t(spec.height), max_pixels));
+            throw ImageDecodeError(
+                name, too_large(uint32_t(spec.width), uint32_t(spec.height), max_pixels));
         // More than RGBA (e.g. EXR layers) is cut to the first four channels.
         const int channels = std::min(spec.nchannels, 4);
         Image img(spec.width, spec.height, channels);
@@ -84,8 +84,8 @@ Image decode_with(const std::vector<uint8_t>& bytes, const std::string& name, co
     } catch (const ImageDecodeError&) {
         throw;
     } catch (const std::exception& e) {
-        throw ImageDecodeError(name, std::string("the ") + ext + " decoder failed (" +
-                                         one_line(e.what()) + ")");
+        throw ImageDecodeError(
+            name, std::string("the ") + ext + " decoder failed (" + one_line(e.what()) + ")");
     }
 }
 

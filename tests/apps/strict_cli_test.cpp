@@ -1,9 +1,8 @@
 // render --strict and --max-texture-pixels, and the job file's "strict" key: a scene
 // whose texture is a corrupt PNG renders with one warning and its factor colour, and
 // fails naming the image, without writing the output, when warnings are errors.
-#include <gtest/gtest.h>
-
 #include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
@@ -51,8 +50,9 @@ std::string write_scene(const ScratchDir& dir, const std::vector<uint8_t>& png) 
 
 std::vector<std::string> args(const std::string& scene, const std::string& out,
                               std::vector<std::string> extra = {}) {
-    std::vector<std::string> a = {"render",  scene, "-o",   out, "--integrator", "albedo",
-                                  "--width", "9",   "--height", "9", "--spp", "1", "--no-preview"};
+    std::vector<std::string> a = {"render", scene,     "-o",          out,        "--integrator",
+                                  "albedo", "--width", "9",           "--height", "9",
+                                  "--spp",  "1",       "--no-preview"};
     a.insert(a.end(), extra.begin(), extra.end());
     return a;
 }
@@ -74,17 +74,16 @@ TEST(StrictCli, CorruptTextureWarnsOrFailsWithStrict) {
     EXPECT_NE(lenient.output.find("warning: " + warning), std::string::npos) << lenient.output;
     EXPECT_NEAR(centre_red(dir.file("a.exr")), 0.2f, 1e-4f);  // the factor alone
 
-    const test::CliResult strict =
-        test::run_penumbra(args(scene, dir.file("b.exr"), {"--strict"}));
+    const test::CliResult strict = test::run_penumbra(args(scene, dir.file("b.exr"), {"--strict"}));
     EXPECT_EQ(strict.status, 1) << strict.output;
     EXPECT_NE(strict.output.find("error: " + warning), std::string::npos) << strict.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("b.exr")));
 
     const std::string job = dir.write("job.json", R"({"defaults": {"strict": true}, "jobs": [
             {"scene": "scene.gltf", "output": "c.exr"}]})");
-    const test::CliResult from_job = test::run_penumbra(
-        {"render", "--job", job, "--integrator", "albedo", "--width", "9", "--spp", "1",
-         "--no-preview"});
+    const test::CliResult from_job =
+        test::run_penumbra({"render", "--job", job, "--integrator", "albedo", "--width", "9",
+                            "--spp", "1", "--no-preview"});
     EXPECT_NE(from_job.status, 0) << from_job.output;
     EXPECT_NE(from_job.output.find(warning), std::string::npos) << from_job.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("c.exr")));

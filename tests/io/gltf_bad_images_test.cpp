@@ -1,9 +1,8 @@
 // Images that cannot be decoded: one warning naming the file, the image and why, the
 // material keeps its factors, and --strict (GltfLoadOptions::strict) makes it an error;
 // formats glTF does not allow, the pixel limit, and the fuzzer's GIF inside a .glb.
-#include <gtest/gtest.h>
-
 #include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
 
 #include <fstream>
 #include <iterator>
@@ -48,8 +47,8 @@ std::string write_scene(const ScratchDir& dir, const std::vector<uint8_t>& bad) 
     GltfBuilder b;
     b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
     b.add(std::vector<float>{0, 0, 1, 0, 0, 1}, test::kFloat, "VEC2");
-    const std::string members = R"("images": [{"uri": "bad.png"}, {"uri": ")" +
-                                test::png_uri(dir) + R"("}],
+    const std::string members =
+        R"("images": [{"uri": "bad.png"}, {"uri": ")" + test::png_uri(dir) + R"("}],
         "textures": [{"source": 0}, {"source": 1}],
         "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.25, 0.5, 0.75, 1],
                          "roughnessFactor": 0.3, "baseColorTexture": {"index": 0},
@@ -170,8 +169,9 @@ TEST(GltfBadImages, FuzzFoundFilesLoadWithClearMessages) {
     const std::string log = testing::internal::GetCapturedStderr();
     EXPECT_EQ(count(log, path + ": images[0]"), 1u) << log;
     EXPECT_EQ(count(log, "cannot decode image: not a PNG or JPEG image"), 1u) << log;
-    EXPECT_EQ(error, path + ": animations[0].samplers[0]: input times are not strictly "
-                            "increasing (key 1)");
+    EXPECT_EQ(error, path +
+                         ": animations[0].samplers[0]: input times are not strictly "
+                         "increasing (key 1)");
     GltfLoadOptions options;
     options.strict = true;
     try {

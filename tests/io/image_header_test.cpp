@@ -69,8 +69,8 @@ TEST(ImageHeader, PngAndJpegDimensionsAgreeWithTheDecoder) {
 TEST(ImageHeader, WebpHeadersOnlyWhenAllowed) {
     // VP8L: signature 0x2f, then 14 bits width - 1 and 14 bits height - 1.
     const uint32_t bits = (100 - 1) | (50 - 1) << 14;
-    const std::vector<uint8_t> vp8l = webp(
-        "VP8L", {0x2f, uint8_t(bits), uint8_t(bits >> 8), uint8_t(bits >> 16), uint8_t(bits >> 24)});
+    const std::vector<uint8_t> vp8l = webp("VP8L", {0x2f, uint8_t(bits), uint8_t(bits >> 8),
+                                                    uint8_t(bits >> 16), uint8_t(bits >> 24)});
     ImageHeader h = read_image_header(vp8l, true);
     EXPECT_EQ(h.problem, "");
     EXPECT_EQ(h.format, ImageFormat::Webp);
@@ -102,11 +102,11 @@ TEST(ImageHeader, OtherFormatsAndBrokenHeadersAreRefused) {
     ScratchDir dir;
     const auto text = [](const std::string& s) { return std::vector<uint8_t>(s.begin(), s.end()); };
     const std::vector<uint8_t> others[] = {
-        text("GIF89a\x01\x00\x01\x00"),                      // GIF
-        text("\xABKTX 20\xBB\r\n\x1a\n"),                    // KTX2
-        text("<!DOCTYPE html><html></html>"),                // a web page
-        text("BM\x3a\0\0\0"),                                // BMP
-        encoded(dir, "a.exr", 2, 2),                         // EXR, which OIIO would read
+        text("GIF89a\x01\x00\x01\x00"),        // GIF
+        text("\xABKTX 20\xBB\r\n\x1a\n"),      // KTX2
+        text("<!DOCTYPE html><html></html>"),  // a web page
+        text("BM\x3a\0\0\0"),                  // BMP
+        encoded(dir, "a.exr", 2, 2),           // EXR, which OIIO would read
         {},
     };
     for (const auto& b : others) {
