@@ -135,6 +135,43 @@ TEST(GltfBadImages, OnlyPngAndJpegWithoutWebpExtension) {
     }
 }
 
+// KHR_texture_basisu with real KTX2 bytes: the texture's `source` fallback is used and the
+// KTX2 image is never decoded (no warning); without a fallback, an error naming the
+// texture and why (Debian 12 packages no Basis Universal transcoder).
+TEST(GltfBadImages, BasisuUsesTheFallbackAndNeverDecodesKtx2) {
+    ScratchDir dir;
+    const std::string ktx2 = "\xABKTX 20\xBB\r\n\x1a\n";
+    std::ofstream(dir.file("t.ktx2"), std::ios::binary) << ktx2;
+    GltfBuilder b;
+    b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
+    auto load = [&](const std::string& texture) {
+        const std::string members =
+            R"("extensionsUsed": ["KHR_texture_basisu"],
+            "images": [{"uri": ")" +
+            test::png_uri(dir) +
+            R"("}, {"uri": "t.ktx2", "mimeType": "image/ktx2"}], "textures": [)" + texture +
+            R"(], "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],)" +
+            test::one_mesh_scene(R"({"attributes": {"POSITION": 0}, "material": 0})");
+        return load_gltf(b.write(dir, "basisu.gltf", members, BufferStorage::DataUri));
+    };
+    testing::internal::CaptureStderr();
+    const Scene s = load(R"({"source": 0, "extensions": {"KHR_texture_basisu": {"source": 1}}})");
+    const std::string log = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(s.images.size(), 1u);
+    EXPECT_TRUE(s.materials.at(0).base_color_texture.valid());
+    EXPECT_EQ(log.find("cannot decode"), std::string::npos) << log;
+    try {
+        load(R"({"extensions": {"KHR_texture_basisu": {"source": 1}}})");
+        ADD_FAILURE();
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  dir.file("basisu.gltf") +
+                      ": textures[0]: has only a KHR_texture_basisu (KTX2) source and no "
+                      "fallback source image; KTX2 cannot be decoded (no Basis Universal "
+                      "decoder)");
+    }
+}
+
 TEST(GltfBadImages, PixelLimitIsAWarningNamingTheLimit) {
     ScratchDir dir;
     const std::string path = write_scene(dir, png_bytes(dir, 3, 2));
