@@ -27,8 +27,9 @@ ImageHeader refused(ImageFormat format, const std::string& problem) {
 // PNG: the 8-byte signature, then IHDR first with width and height as big-endian
 // 31-bit values (PNG spec, sections 5.2 and 11.2.2).
 ImageHeader png_header(const std::vector<uint8_t>& b) {
-    if (b.size() < 24 || !starts(b, "IHDR", 12))
-        return refused(ImageFormat::Png, "truncated PNG header (no IHDR)");
+    if (b.size() < 24) return refused(ImageFormat::Png, "truncated PNG header (no IHDR)");
+    if (!starts(b, "IHDR", 12))
+        return refused(ImageFormat::Png, "malformed PNG header (the first chunk is not IHDR)");
     ImageHeader h;
     h.format = ImageFormat::Png;
     h.width = be32(&b[16]);

@@ -125,6 +125,10 @@ TEST(ImageHeader, OtherFormatsAndBrokenHeadersAreRefused) {
     std::vector<uint8_t> png = encoded(dir, "a.png", 3, 2);
     EXPECT_EQ(read_image_header({png.begin(), png.begin() + 20}, false).problem,
               "truncated PNG header (no IHDR)");
+    std::vector<uint8_t> cgbi = png;
+    cgbi[12] = 'C';  // e.g. Apple's CgBI chunk first
+    EXPECT_EQ(read_image_header(cgbi, false).problem,
+              "malformed PNG header (the first chunk is not IHDR)");
     set_be32(png, 16, 0);
     EXPECT_EQ(read_image_header(png, false).problem, "header claims a 0x2 image");
     set_be32(png, 16, 0x80000000u);
