@@ -13,10 +13,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <typeinfo>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <typeinfo>
 
 #include "core/error.h"
 #include "core/log.h"
