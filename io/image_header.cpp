@@ -36,6 +36,24 @@ ImageHeader png_header(const std::vector<uint8_t>& b) {
     h.height = be32(&b[20]);
     if (h.width > 0x7fffffffu || h.height > 0x7fffffffu)
         h.problem = "PNG header has a dimension above 2^31 - 1";
+    // Chunks (length, type, data, CRC) up to IEND: a file cut short is named here rather
+    // than by libpng, which prints its own line to stderr (PNG spec, section 5.3).
+    bool idat = false;
+    for (size_t at = 8; h.problem.empty();) {
+        if (at + 12 > b.size()) {
+            h.problem = "truncated PNG (it ends before IEND)";
+            break;
+        }
+        const uint64_t end = uint64_t(at) + 12 + be32(&b[at]);
+        const std::string type(reinterpret_cast<const char*>(&b[at + 4]), 4);
+        if (end > b.size())
+            h.problem = "truncated PNG (its " + type + " chunk runs past the end of the data)";
+        else if (type == "IEND" && !idat)
+            h.problem = "malformed PNG (no IDAT chunk before IEND)";
+        if (type == "IEND") break;
+        idat = idat || type == "IDAT";
+        at = size_t(end);
+    }
     return h;
 }
 

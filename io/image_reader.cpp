@@ -95,9 +95,10 @@ Image decode_texture_image(const std::vector<uint8_t>& bytes, const std::string&
                            ImageEncoding encoding, const TextureDecodeLimits& limits) {
     if (bytes.empty()) throw ImageDecodeError(name, "no data");
     const ImageHeader h = read_image_header(bytes, limits.allow_webp);
-    if (!h.problem.empty()) throw ImageDecodeError(name, h.problem);
-    if (uint64_t(h.width) * h.height > limits.max_pixels)
+    // The size first: a header claiming too much is refused for that, whatever follows.
+    if (h.format != ImageFormat::Unknown && uint64_t(h.width) * h.height > limits.max_pixels)
         throw ImageDecodeError(name, too_large(h.width, h.height, limits.max_pixels));
+    if (!h.problem.empty()) throw ImageDecodeError(name, h.problem);
     Image img = decode_with(bytes, name, image_extension(h.format), encoding, limits.max_pixels);
     if (uint32_t(img.width) != h.width || uint32_t(img.height) != h.height)
         throw ImageDecodeError(name, "the header says " + std::to_string(h.width) + "x" +

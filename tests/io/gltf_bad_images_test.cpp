@@ -77,6 +77,10 @@ TEST(GltfBadImages, CorruptPngIsOneWarningAndTheFactorsRemain) {
     const std::string log = testing::internal::GetCapturedStderr();
     const std::string warning = path + ": images[0] ('bad.png'): cannot decode image: ";
     EXPECT_EQ(count(log, warning), 1u) << log;  // used twice, as colour and as data
+    EXPECT_EQ(count(log, warning + "truncated PNG (its IDAT chunk runs past the end of the "
+                                   "data); the textures using it are ignored\n"),
+              1u)
+        << log;
     EXPECT_EQ(count(log, "the textures using it are ignored"), 1u) << log;
     ASSERT_EQ(s.materials.size(), 2u);
     const MaterialDesc& m = s.materials[0];

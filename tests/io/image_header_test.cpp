@@ -125,6 +125,16 @@ TEST(ImageHeader, OtherFormatsAndBrokenHeadersAreRefused) {
     std::vector<uint8_t> png = encoded(dir, "a.png", 3, 2);
     EXPECT_EQ(read_image_header({png.begin(), png.begin() + 20}, false).problem,
               "truncated PNG header (no IHDR)");
+    // Cut inside the image data, cut exactly at a chunk boundary (IEND missing), and with
+    // trailing bytes after IEND (accepted, as libpng does).
+    std::vector<uint8_t> cut(png.begin(), png.end() - 14);
+    EXPECT_EQ(read_image_header(cut, false).problem,
+              "truncated PNG (its IDAT chunk runs past the end of the data)");
+    cut.assign(png.begin(), png.end() - 12);
+    EXPECT_EQ(read_image_header(cut, false).problem, "truncated PNG (it ends before IEND)");
+    std::vector<uint8_t> trailing = png;
+    trailing.insert(trailing.end(), {1, 2, 3});
+    EXPECT_EQ(read_image_header(trailing, false).problem, "");
     std::vector<uint8_t> cgbi = png;
     cgbi[12] = 'C';  // e.g. Apple's CgBI chunk first
     EXPECT_EQ(read_image_header(cgbi, false).problem,
