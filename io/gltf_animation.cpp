@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <map>
 #include <set>
 
 #include "io/gltf_accessor.h"
@@ -142,6 +143,13 @@ AnimationCurve read_curve(const GltfContext& ctx, size_t a, int s, Path path, in
     return c;
 }
 
+// "(nodes[1] rotation, nodes[2] scale, ...)": up to three examples.
+std::string examples(const std::vector<std::string>& items) {
+    std::string s = " (";
+    for (size_t i = 0; i < items.size() && i < 3; ++i) s += (i ? ", " : "") + items[i];
+    return s + (items.size() > 3 ? ", ...)" : ")");
+}
+
 }  // namespace
 
 void AnimationCurve::sample(double t, double* out) const {
@@ -209,8 +217,11 @@ GltfAnimations::GltfAnimations(const GltfContext& ctx) {
     struct Target {
         int node;
         Path path;
-        size_t curve;
+        size_t curve, animation;
     };
+    // Out-of-spec but renderable: one summary warning per kind, with a count and the
+    // first examples (as the glTF validator reports), not one line per channel.
+    std::vector<std::string> untargeted, overlapping;
     std::vector<Target> targets;
     for (size_t a = 0; a < m.animations.size(); ++a) {
         const tinygltf::Animation& anim = m.animations[a];
@@ -221,7 +232,7 @@ GltfAnimations::GltfAnimations(const GltfContext& ctx) {
             ctx.check_index(el, "sampler", ch.sampler, anim.samplers.size(), "samplers");
             if (ch.target_path == "pointer" || ch.target_node < 0) {
                 // KHR_animation_pointer and other extensions name targets we do not know.
-                ctx.warn_once(el, "channel without a target node is ignored");
+                untargeted.push_back(el);
                 continue;
             }
             ctx.check_index(el, "target node", ch.target_node, m.nodes.size(), "nodes");
@@ -249,12 +260,17 @@ GltfAnimations::GltfAnimations(const GltfContext& ctx) {
                 ctx.fail(el, "targets " + element("nodes", size_t(ch.target_node)) + " " +
                                  path_name(path) + " again in the same animation");
             m_curves.push_back(read_curve(ctx, a, ch.sampler, path, ch.target_node));
-            targets.push_back({ch.target_node, path, m_curves.size() - 1});
+            targets.push_back({ch.target_node, path, m_curves.size() - 1, a});
         }
     }
+    if (!untargeted.empty())
+        ctx.warn("animations", std::to_string(untargeted.size()) +
+                                   " channel(s) without a target node ignored" +
+                                   examples(untargeted));
     if (m_curves.empty()) return;
     // Pointers are taken once m_curves has stopped growing.
     m_nodes.resize(m.nodes.size());
+    std::map<const AnimationCurve**, size_t> used;  // the animation each slot came from
     for (const Target& t : targets) {
         NodeChannels& nc = m_nodes[size_t(t.node)];
         const AnimationCurve** slot = t.path == Path::Translation ? &nc.translation
@@ -262,13 +278,20 @@ GltfAnimations::GltfAnimations(const GltfContext& ctx) {
                                       : t.path == Path::Scale     ? &nc.scale
                                                                   : &nc.weights;
         if (*slot) {
-            ctx.warn_once(element("nodes", size_t(t.node)),
-                          std::string(path_name(t.path)) +
-                              " is animated by several animations; the first one is used");
+            overlapping.push_back(element("nodes", size_t(t.node)) + " " + path_name(t.path) +
+                                  " by " + element("animations", used[slot]) + " and " +
+                                  element("animations", t.animation));
             continue;
         }
         *slot = &m_curves[t.curve];
+        used[slot] = t.animation;
     }
+    // All animations play on one timeline, so a property driven by two has two values.
+    if (!overlapping.empty())
+        ctx.warn("animations", std::to_string(overlapping.size()) +
+                                   " node properties animated by several animations; the "
+                                   "first animation's channel is used" +
+                                   examples(overlapping));
 }
 
 const NodeChannels* GltfAnimations::node(int index) const {

@@ -50,7 +50,8 @@ struct NodePose {
 };
 
 // Every animation of a file, played together on one timeline starting at 0 s. A node
-// property animated by two animations takes the first one's channel (with a warning).
+// property animated by two animations takes the first one's channel (one warning per file
+// counts them).
 class GltfAnimations {
 public:
     GltfAnimations() = default;

@@ -21,11 +21,15 @@ struct GltfContext {
     Mat3 rec709_to_working = Mat3::identity();  // for light colours (scene_color.h)
     LightUnits light_units = LightUnits::Photometric;  // KHR_lights_punctual intensities
     int variant = -1;  // KHR_materials_variants index chosen; -1: default materials
+    bool strict = false;  // warn() and warn_once() throw, as fail() does (--strict)
+    uint64_t max_texture_pixels = uint64_t(1) << 28;  // GltfLoadOptions::max_texture_pixels
 
     // Throws SceneError "<file>: <element>: <problem>".
     [[noreturn]] void fail(const std::string& element, const std::string& problem) const {
         throw SceneError(file + ": " + element + ": " + problem);
     }
+    // Logs "<file>: <element>: <problem>" (warn_once: once per process and message); in
+    // strict mode, throws it as fail() does.
     void warn(const std::string& element, const std::string& problem) const;
     void warn_once(const std::string& element, const std::string& problem) const;
 

@@ -1,7 +1,9 @@
 #include "io/gltf_deform.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "io/gltf_accessor.h"
 
@@ -283,6 +285,71 @@ std::optional<DeformedObject> add_deformed_object(const GltfContext& ctx,
     }
     scene.objects.push_back(std::move(object));
     return DeformedObject{uint32_t(scene.objects.size() - 1), skin.has_value()};
+}
+
+namespace {
+
+// How far a vertex's weight sum may stray from 1: float weights carry exporters' rounding
+// to a few decimals (we allow 1e-3); normalized integers, half a code per weight.
+float weight_tolerance(const tinygltf::Accessor& a, size_t weights) {
+    if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE)
+        return float(weights) * 0.5f / 255.0f + 1e-6f;
+    if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)
+        return float(weights) * 0.5f / 65535.0f + 1e-6f;
+    return 1e-3f;
+}
+
+}  // namespace
+
+void warn_unnormalized_skin_weights(const GltfContext& ctx) {
+    std::set<int> meshes;  // meshes that skinned nodes use, each checked once
+    for (const tinygltf::Node& node : ctx.model.nodes)
+        if (node.skin >= 0 && node.mesh >= 0 && size_t(node.mesh) < ctx.model.meshes.size())
+            meshes.insert(node.mesh);
+    size_t vertices = 0, primitives = 0;
+    std::string example;
+    for (int m : meshes) {
+        const auto& prims = ctx.model.meshes[size_t(m)].primitives;
+        for (size_t p = 0; p < prims.size(); ++p) {
+            std::vector<float> sum;
+            float tolerance = 0;
+            bool readable = true;
+            for (int set = 0; readable; ++set) {
+                const auto it = prims[p].attributes.find("WEIGHTS_" + std::to_string(set));
+                if (it == prims[p].attributes.end()) break;
+                // Only data the deformation code accepts; it reports the rest as errors.
+                try {
+                    const tinygltf::Accessor& a = get_accessor(ctx, "", "WEIGHTS", it->second);
+                    const std::vector<float> w = read_floats(ctx, it->second);
+                    if (a.type != TINYGLTF_TYPE_VEC4 || w.size() != 4 * a.count ||
+                        (set > 0 && w.size() != 4 * sum.size())) {
+                        readable = false;
+                        break;
+                    }
+                    sum.resize(a.count, 0.0f);
+                    for (size_t i = 0; i < w.size(); ++i) sum[i / 4] += w[i];
+                    tolerance = std::max(tolerance, weight_tolerance(a, 4 * size_t(set + 1)));
+                } catch (const SceneError&) {
+                    readable = false;
+                }
+            }
+            if (!readable) continue;
+            size_t bad = 0;
+            for (size_t v = 0; v < sum.size(); ++v) {
+                if (std::abs(sum[v] - 1.0f) <= tolerance) continue;
+                if (bad++ == 0 && example.empty())
+                    example = element("meshes", size_t(m)) + "." + element("primitives", p) +
+                              " vertex " + std::to_string(v) + " sums to " + std::to_string(sum[v]);
+            }
+            vertices += bad;
+            primitives += bad > 0;
+        }
+    }
+    // glTF 2.0, section 3.7.3.3: the weights of a vertex sum to one (a validator error).
+    if (vertices > 0)
+        ctx.warn("skins", "the skin weights of " + std::to_string(vertices) + " vertices in " +
+                              std::to_string(primitives) + " primitive(s) do not sum to 1 (" +
+                              example + "); they are used as they are");
 }
 
 }  // namespace penumbra

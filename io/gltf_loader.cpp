@@ -3,6 +3,7 @@
 // node tree (gltf_mesh.cpp, gltf_material.cpp, gltf_nodes.cpp).
 #include "io/gltf_loader.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
@@ -15,7 +16,9 @@
 #include "io/gltf_animation.h"
 #include "io/gltf_compression.h"
 #include "io/gltf_context.h"
+#include "io/gltf_deform.h"
 #include "io/gltf_node_motion.h"
+#include "io/gltf_signature.h"
 #include "io/gltf_variants.h"
 #include "io/scene_color.h"
 
@@ -94,14 +97,29 @@ std::string one_line(const std::string& text) {
     return out;
 }
 
-void log_lines(const std::string& file, const std::string& text) {
+// tinygltf's warnings, one line per kind: repeats (one per element) are counted, not
+// printed again. It wrongly requires skins[].inverseBindMatrices, which is optional
+// (identity; glTF 2.0, section 5.28), so that line is dropped.
+void log_lines(const std::string& file, const std::string& text, bool strict) {
+    std::vector<std::pair<std::string, int>> lines;
     size_t start = 0;
     while (start < text.size()) {
         size_t end = text.find('\n', start);
         if (end == std::string::npos) end = text.size();
         const std::string line = one_line(text.substr(start, end - start));
-        if (!line.empty()) LOG_WARNING(file << ": " << line);
         start = end + 1;
+        if (line.empty() || line == "'inverseBindMatrices' property is missing in Skin.") continue;
+        auto it = std::find_if(lines.begin(), lines.end(), [&](auto& l) { return l.first == line; });
+        if (it == lines.end())
+            lines.emplace_back(line, 1);
+        else
+            ++it->second;
+    }
+    for (const auto& [line, n] : lines) {
+        const std::string msg =
+            file + ": " + line + (n > 1 ? " (" + std::to_string(n) + " times)" : "");
+        if (strict) throw SceneError(msg + " [--strict]");
+        LOG_WARNING(msg);
     }
 }
 
@@ -116,8 +134,7 @@ void check_asset_and_extensions(const GltfContext& ctx) {
             ctx.fail("extensionsRequired", "unsupported extension '" + name + "'");
     for (const std::string& name : ctx.model.extensionsUsed)
         if (!is_supported(name))
-            log_once(LogLevel::Warning,
-                     ctx.file + ": ignoring unsupported optional extension '" + name + "'");
+            ctx.warn_once("extensionsUsed", "ignoring unsupported optional extension '" + name + "'");
 }
 
 // The glTF scene to load: the caller's choice, else the file's default, else scene 0;
@@ -135,12 +152,13 @@ int choose_scene(const GltfContext& ctx, int requested) {
     return count > 0 ? 0 : -1;
 }
 
-tinygltf::Model parse(const std::string& path) {
+tinygltf::Model parse(const std::string& path, bool strict) {
     std::error_code ec;
     char magic[4] = {};
     std::ifstream file(path, std::ios::binary);
     if (!std::filesystem::is_regular_file(path, ec) || !file)
         throw SceneError(path + ": cannot open file");
+    check_gltf_signature(path);
     file.read(magic, sizeof(magic));
     // GLB is recognised by its header, not its extension (glTF 2.0, section 4.4.2).
     const bool binary = file.gcount() == 4 && std::memcmp(magic, "glTF", 4) == 0;
@@ -171,7 +189,7 @@ tinygltf::Model parse(const std::string& path) {
         // tinygltf throws on some malformed input (e.g. an empty data: URI).
         throw SceneError(path + ": " + one_line(e.what()));
     }
-    log_lines(path, warn);
+    log_lines(path, warn, strict);
     // tinygltf reads extensionsRequired before buffers and accessors, which an unknown
     // extension may leave without data; name the extension, not the accessor it broke.
     if (!ok)
@@ -180,7 +198,7 @@ tinygltf::Model parse(const std::string& path) {
                 throw SceneError(path + ": extensionsRequired: unsupported extension '" + name +
                                  "'");
     if (!ok) throw SceneError(path + ": " + (err.empty() ? "cannot parse glTF" : one_line(err)));
-    log_lines(path, err);  // tinygltf reports some recoverable problems as errors
+    log_lines(path, err, strict);  // tinygltf reports some recoverable problems as errors
     if (compressed) decode_compressed_gltf(model, compressed->fixups, path);
     return model;
 }
@@ -188,22 +206,26 @@ tinygltf::Model parse(const std::string& path) {
 }  // namespace
 
 void GltfContext::warn(const std::string& element, const std::string& problem) const {
+    if (strict) fail(element, problem + " [--strict]");
     LOG_WARNING(file << ": " << element << ": " << problem);
 }
 
 void GltfContext::warn_once(const std::string& element, const std::string& problem) const {
+    if (strict) fail(element, problem + " [--strict]");
     log_once(LogLevel::Warning, file + ": " + element + ": " + problem);
 }
 
 GltfAnimations load_gltf_animations(const std::string& path) {
-    const tinygltf::Model model = parse(path);
+    const tinygltf::Model model = parse(path, false);
     const GltfContext ctx{model, path};
     return GltfAnimations(ctx);
 }
 
 Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
-    const tinygltf::Model model = parse(path);
+    const tinygltf::Model model = parse(path, options.strict);
     GltfContext ctx{model, path, options.rec709_to_working, options.light_units};
+    ctx.strict = options.strict;
+    ctx.max_texture_pixels = options.max_texture_pixels;
     check_asset_and_extensions(ctx);
     ctx.variant = find_variant(ctx, options.variant);
 
@@ -229,6 +251,7 @@ Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
         load_nodes(ctx, scene_index, motion, origins, scene);
     else
         ctx.warn("scenes", "the file defines no scene; nothing will be rendered");
+    warn_unnormalized_skin_weights(ctx);
     return scene;
 }
 

@@ -8,6 +8,7 @@
 #include "core/lights/light_units.h"
 #include "core/math/mat3.h"
 #include "core/scene/scene.h"
+#include "io/image_reader.h"
 
 namespace penumbra {
 
@@ -26,6 +27,10 @@ struct GltfLoadOptions {
     std::string variant = "";
     // KHR_lights_punctual intensities: photometric (cd, lux; the spec's) or radiometric.
     LightUnits light_units = LightUnits::Photometric;
+    // Every warning (an undecodable image, data out of spec) is a SceneError instead.
+    bool strict = false;
+    // Images whose header claims more pixels are refused (undecodable) before decoding.
+    uint64_t max_texture_pixels = kDefaultMaxTexturePixels;
 };
 
 // Loads the file at path; throws SceneError for bad input, including a shutter that

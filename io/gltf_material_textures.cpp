@@ -2,6 +2,7 @@
 
 #include "io/gltf_accessor.h"
 #include "io/gltf_material_json.h"
+#include "io/image_reader.h"
 
 namespace penumbra {
 
@@ -15,6 +16,11 @@ const tinygltf::Value& texture_transform(const tinygltf::ExtensionMap& extension
 }
 
 }  // namespace
+
+TextureTable::TextureTable(const GltfContext& ctx, Scene& scene) : m_ctx(ctx), m_scene(scene) {
+    for (const std::string& name : ctx.model.extensionsUsed)
+        if (name == "EXT_texture_webp") m_allow_webp = true;
+}
 
 TextureRef TextureTable::ref(const std::string& el, int texture, int texcoord,
                              ImageEncoding encoding, const tinygltf::ExtensionMap& extensions) {
@@ -81,7 +87,12 @@ int TextureTable::texture_index(int index, ImageEncoding encoding) {
         tex.wrap_t = wrap_mode(sel, "wrapT", s.wrapT);
         tex.nearest = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
     }
-    tex.image = uint32_t(image_index(image_source(gt, el), encoding));
+    const int image = image_index(image_source(gt, el), encoding);
+    if (image < 0) {  // undecodable: the texture is absent
+        m_textures.emplace(key, -1);
+        return -1;
+    }
+    tex.image = uint32_t(image);
     const int result = int(m_scene.textures.size());
     m_scene.textures.push_back(tex);
     m_textures.emplace(key, result);
@@ -90,7 +101,8 @@ int TextureTable::texture_index(int index, ImageEncoding encoding) {
 
 // EXT_texture_webp: the WebP image when the texture names one (OIIO decodes WebP); the
 // core `source` is then only the fallback for viewers without WebP. KHR_texture_basisu
-// (KTX2) is not read, so a texture with only that source is an error.
+// (KTX2) is not read (Debian 12 packages no Basis Universal transcoder), so its texture
+// uses the core `source`, the fallback the extension allows, and is an error without one.
 int TextureTable::image_source(const tinygltf::Texture& gt, const std::string& el) const {
     const tinygltf::Value& webp = extension_object(gt.extensions, "EXT_texture_webp");
     if (webp.IsObject()) {
@@ -103,7 +115,9 @@ int TextureTable::image_source(const tinygltf::Texture& gt, const std::string& e
     }
     if (gt.source == -1) {
         if (gt.extensions.count("KHR_texture_basisu"))
-            m_ctx.fail(el, "has only a KHR_texture_basisu (KTX2) source, which is not supported");
+            m_ctx.fail(el,
+                       "has only a KHR_texture_basisu (KTX2) source and no fallback source "
+                       "image; KTX2 cannot be decoded (no Basis Universal decoder)");
         m_ctx.fail(el, "has no source image");
     }
     m_ctx.check_index(el, "source", gt.source, m_ctx.model.images.size(), "images");
@@ -113,6 +127,7 @@ int TextureTable::image_source(const tinygltf::Texture& gt, const std::string& e
 int TextureTable::image_index(int index, ImageEncoding encoding) {
     const auto key = std::make_pair(index, int(encoding));
     if (auto it = m_images.find(key); it != m_images.end()) return it->second;
+    if (m_undecodable.count(index)) return -1;
     const tinygltf::Image& gi = m_ctx.model.images[size_t(index)];
     const std::string el = element("images", size_t(index));
     const bool external = !gi.uri.empty() && gi.uri.compare(0, 5, "data:") != 0;
@@ -125,7 +140,22 @@ int TextureTable::image_index(int index, ImageEncoding encoding) {
         m_ctx.fail(el, "cannot read image file '" + gi.uri + "'");
     else
         m_ctx.fail(el, "has no image data");
-    Image img = decode_image(bytes, m_ctx.file + ": " + el, encoding);
+    const std::string label = external ? gi.uri : gi.name;
+    const std::string named = label.empty() ? el : el + " ('" + label + "')";
+    TextureDecodeLimits limits;
+    limits.allow_webp = m_allow_webp;
+    limits.max_pixels = m_ctx.max_texture_pixels;
+    Image img;
+    try {
+        img = decode_texture_image(bytes, m_ctx.file + ": " + named, encoding, limits);
+    } catch (const ImageDecodeError& e) {
+        // Renderable without it: the textures using it are left out, so their materials
+        // use their factors alone; one warning per image, whichever encodings use it.
+        m_undecodable.insert(index);
+        m_ctx.warn(named,
+                   "cannot decode image: " + e.why() + "; the textures using it are ignored");
+        return -1;
+    }
     img.name = external ? gi.uri : (gi.name.empty() ? el : gi.name);
     const int result = int(m_scene.images.size());
     m_scene.images.push_back(std::move(img));

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <utility>
 
 #include "io/gltf_context.h"
@@ -13,10 +14,11 @@ namespace penumbra {
 
 class TextureTable {
 public:
-    TextureTable(const GltfContext& ctx, Scene& scene) : m_ctx(ctx), m_scene(scene) {}
+    TextureTable(const GltfContext& ctx, Scene& scene);
 
     // The reference for a glTF textureInfo at element path `el`, with the extensions of
-    // that textureInfo (for KHR_texture_transform). texture -1: none.
+    // that textureInfo (for KHR_texture_transform). texture -1: none. A texture whose
+    // image cannot be decoded gives one warning and an invalid (absent) reference.
     TextureRef ref(const std::string& el, int texture, int texcoord, ImageEncoding encoding,
                    const tinygltf::ExtensionMap& extensions);
 
@@ -34,7 +36,9 @@ private:
 
     const GltfContext& m_ctx;
     Scene& m_scene;
-    std::map<std::pair<int, int>, int> m_textures, m_images;
+    bool m_allow_webp = false;  // EXT_texture_webp is used: WebP images are glTF images
+    std::map<std::pair<int, int>, int> m_textures, m_images;  // -1: undecodable
+    std::set<int> m_undecodable;                              // glTF image indices
 };
 
 }  // namespace penumbra

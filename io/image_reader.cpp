@@ -13,12 +13,11 @@
 
 #include "core/error.h"
 #include "io/color.h"
+#include "io/image_header.h"
 
 namespace penumbra {
 
 namespace {
-
-constexpr size_t kMaxPixels = size_t(1) << 28;  // 16k x 16k
 
 // OIIO picks a reader from the file name's extension; bytes from a glTF buffer have
 // no name, so the format is recognised from its signature instead.
@@ -46,11 +45,72 @@ std::string one_line(std::string s) {
     return s.empty() ? "unknown error" : s;
 }
 
+std::string too_large(uint32_t w, uint32_t h, uint64_t max_pixels) {
+    return std::to_string(w) + "x" + std::to_string(h) + " is more than the limit of " +
+           std::to_string(max_pixels) + " pixels (--max-texture-pixels)";
+}
+
+// Decodes with OIIO's reader for `ext`, refusing more than max_pixels before reading
+// pixels. OIIO's readers throw on some corrupt data (the GIF reader std::length_error),
+// so anything they throw becomes an ImageDecodeError naming the image.
+Image decode_with(const std::vector<uint8_t>& bytes, const std::string& name, const char* ext,
+                  ImageEncoding encoding, uint64_t max_pixels) {
+    try {
+        OIIO::Filesystem::IOMemReader proxy(bytes.data(), bytes.size());
+        auto in = OIIO::ImageInput::create(ext, false, nullptr, &proxy);
+        OIIO::ImageSpec spec_in;
+        if (!in || !in->supports("ioproxy"))
+            throw ImageDecodeError(name, std::string("no reader for format '") + ext + "'");
+        if (!in->set_ioproxy(&proxy) || !in->open(std::string("memory.") + ext, spec_in))
+            throw ImageDecodeError(name, one_line(in->geterror()));
+
+        const OIIO::ImageSpec& spec = in->spec();
+        if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+            throw ImageDecodeError(name, "empty image");
+        // A corrupt header can claim any size; refuse rather than die allocating it.
+        if (uint64_t(spec.width) * uint64_t(spec.height) > max_pixels)
+            throw ImageDecodeError(
+                name, too_large(uint32_t(spec.width), uint32_t(spec.height), max_pixels));
+        // More than RGBA (e.g. EXR layers) is cut to the first four channels.
+        const int channels = std::min(spec.nchannels, 4);
+        Image img(spec.width, spec.height, channels);
+        img.name = name;
+        if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
+            throw ImageDecodeError(name, one_line(in->geterror()));
+        in->close();
+        // The transfer applies to colour, never to alpha (glTF 2.0, section 3.9.2).
+        if (encoding == ImageEncoding::Srgb) decode_srgb(img);
+        return img;
+    } catch (const ImageDecodeError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw ImageDecodeError(
+            name, std::string("the ") + ext + " decoder failed (" + one_line(e.what()) + ")");
+    }
+}
+
 }  // namespace
+
+Image decode_texture_image(const std::vector<uint8_t>& bytes, const std::string& name,
+                           ImageEncoding encoding, const TextureDecodeLimits& limits) {
+    if (bytes.empty()) throw ImageDecodeError(name, "no data");
+    const ImageHeader h = read_image_header(bytes, limits.allow_webp);
+    // The size first: a header claiming too much is refused for that, whatever follows.
+    if (h.format != ImageFormat::Unknown && uint64_t(h.width) * h.height > limits.max_pixels)
+        throw ImageDecodeError(name, too_large(h.width, h.height, limits.max_pixels));
+    if (!h.problem.empty()) throw ImageDecodeError(name, h.problem);
+    Image img = decode_with(bytes, name, image_extension(h.format), encoding, limits.max_pixels);
+    if (uint32_t(img.width) != h.width || uint32_t(img.height) != h.height)
+        throw ImageDecodeError(name, "the header says " + std::to_string(h.width) + "x" +
+                                         std::to_string(h.height) + ", the decoder " +
+                                         std::to_string(img.width) + "x" +
+                                         std::to_string(img.height));
+    return img;
+}
 
 Image decode_image(const std::vector<uint8_t>& bytes, const std::string& name,
                    ImageEncoding encoding) {
-    if (bytes.empty()) throw SceneError(name + ": cannot decode image: no data");
+    if (bytes.empty()) throw ImageDecodeError(name, "no data");
     const char* ext = sniff_extension(bytes);
     if (!ext) {
         // Not a signature we know: let OIIO go by the name's extension, if it has one.
@@ -59,35 +119,10 @@ Image decode_image(const std::vector<uint8_t>& bytes, const std::string& name,
                              name.size() - dot <= 6 &&
                              std::all_of(name.begin() + long(dot) + 1, name.end(),
                                          [](char c) { return std::isalnum((unsigned char)c); });
-        if (!has_ext) throw SceneError(name + ": cannot decode image: unrecognised format");
+        if (!has_ext) throw ImageDecodeError(name, "unrecognised format");
         ext = name.c_str() + dot + 1;
     }
-    OIIO::Filesystem::IOMemReader proxy(bytes.data(), bytes.size());
-    auto in = OIIO::ImageInput::create(ext, false, nullptr, &proxy);
-    OIIO::ImageSpec spec_in;
-    if (!in || !in->supports("ioproxy"))
-        throw SceneError(name + ": cannot decode image: no reader for format '" + ext + "'");
-    if (!in->set_ioproxy(&proxy) || !in->open(std::string("memory.") + ext, spec_in))
-        throw SceneError(name + ": cannot decode image: " + one_line(in->geterror()));
-
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
-        throw SceneError(name + ": cannot decode image: empty image");
-    // A corrupt header can claim any size; refuse rather than die allocating it.
-    if (size_t(spec.width) * size_t(spec.height) > kMaxPixels)
-        throw SceneError(name + ": cannot decode image: " + std::to_string(spec.width) + "x" +
-                         std::to_string(spec.height) + " is too large");
-    // More than RGBA (e.g. EXR layers) is cut to the first four channels.
-    const int channels = std::min(spec.nchannels, 4);
-    Image img(spec.width, spec.height, channels);
-    img.name = name;
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
-        throw SceneError(name + ": cannot decode image: " + one_line(in->geterror()));
-    in->close();
-
-    // The transfer applies to colour, never to alpha (glTF 2.0, section 3.9.2).
-    if (encoding == ImageEncoding::Srgb) decode_srgb(img);
-    return img;
+    return decode_with(bytes, name, ext, encoding, kDefaultMaxTexturePixels);
 }
 
 Image read_image(const std::string& path, ImageEncoding encoding) {

@@ -31,7 +31,7 @@ public:
             "frame",  "spp",    "seed",       "time",     "time_limit", "fps",
             "shutter", "shutter_open", "shutter_close", "ocio_config", "working_space",
             "output_colorspace", "display", "view", "look", "aov", "half", "compression",
-            "light_units", "default_light", "exposure"};
+            "light_units", "default_light", "exposure", "strict", "max_texture_pixels"};
         for (const auto& [key, value] : m_object.items()) {
             bool known = false;
             for (const char* k : kKeys) known = known || key == k;
@@ -98,6 +98,16 @@ public:
         number("exposure", s.exposure, false);
         if (s.exposure && std::abs(*s.exposure) > 64)
             fail("exposure", "expected stops in [-64, 64]");
+        if (m_object.contains("strict")) {
+            if (!m_object["strict"].is_boolean()) fail("strict", "expected true or false");
+            s.strict = m_object["strict"].get<bool>();
+        }
+        if (m_object.contains("max_texture_pixels")) {
+            const json& v = m_object["max_texture_pixels"];
+            if (!v.is_number_unsigned() || v.get<uint64_t>() < 1)
+                fail("max_texture_pixels", "expected a positive integer");
+            s.max_texture_pixels = v.get<uint64_t>();
+        }
     }
 
     [[noreturn]] void fail(const std::string& key, const std::string& what) const {

@@ -29,6 +29,9 @@ struct JobSettings {
     // Light: as --light-units, --default-light and --exposure (stops).
     std::optional<std::string> light_units, default_light;
     std::optional<double> exposure;
+    // As --strict and --max-texture-pixels.
+    std::optional<bool> strict;
+    std::optional<uint64_t> max_texture_pixels;
 };
 
 struct JobEntry {

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Fuzzes the glTF loader (.gltf and .glb) with libFuzzer for FUZZ_SECONDS (default 60):
 # builds fuzz/gltf_loader_fuzzer in the asan preset's build (build/asan, or BUILD_DIR),
-# seeds a temporary corpus from scenes/ and the Khronos samples in ../shared (copied, the
-# originals are not touched) and runs. A crash fails the script and leaves its input in
+# seeds a temporary corpus from scenes/ and, in ../shared, the Khronos samples, the real
+# files of scenes/wild/ and the fuzzer's earlier finds in scenes/fuzz-found/ (copied, at
+# most FUZZ_MAX_SEED_BYTES each, default 1 MiB; the originals are not touched) and runs. A crash fails the script and leaves its input in
 # FUZZ_ARTIFACTS (default build/fuzz-artifacts); fix it and add the input to
 # scenes/invalid/ with its expected message.
 set -euo pipefail
@@ -19,8 +20,10 @@ cmake --build "$build_dir" --parallel "$(nproc)" --target gltf_loader_fuzzer
 corpus="$(mktemp -d)"
 trap 'rm -rf "$corpus"' EXIT
 seed_dirs=(scenes)
-if [ -d "$shared/scenes/khronos" ]; then seed_dirs+=("$shared/scenes/khronos"); fi
-python3 fuzz/make_seeds.py "$corpus" "${seed_dirs[@]}"
+for d in khronos wild fuzz-found; do
+    if [ -d "$shared/scenes/$d" ]; then seed_dirs+=("$shared/scenes/$d"); fi
+done
+python3 fuzz/make_seeds.py "$corpus" "${seed_dirs[@]}" --max-bytes "${FUZZ_MAX_SEED_BYTES:-1048576}"
 mkdir -p "$artifacts"
 
 # Full malloc stacks: the suppressions name frames inside libraries built without frame

@@ -67,6 +67,8 @@ void apply(const JobSettings& s, RenderCommandOptions& o) {
     if (s.light_units) o.light_units = *s.light_units;
     if (s.default_light) o.default_light = *s.default_light;
     if (s.exposure) o.exposure = float(*s.exposure);
+    if (s.strict) o.strict = *s.strict;
+    if (s.max_texture_pixels) o.max_texture_pixels = *s.max_texture_pixels;
 }
 
 // Option values the command line checks with CLI11 but a job file can spell freely.

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "io/color.h"
+#include "io/image_reader.h"
 #include "io/timeline.h"
 
 namespace penumbra {
@@ -52,6 +53,8 @@ struct RenderCommandOptions {
     // scene_setup.cpp), on, off.
     std::string default_light = "auto";
     std::string light_units = "photometric";  // KHR_lights_punctual: photometric | radiometric
+    bool strict = false;  // every scene warning is an error (GltfLoadOptions::strict)
+    uint64_t max_texture_pixels = kDefaultMaxTexturePixels;  // larger images are refused
     bool quiet = false;
     // Colour management and EXR output (output_options.cpp).
     ColorSettings color;

@@ -126,6 +126,13 @@ void add_image_options(CLI::App* cmd, RenderCommandOptions& o) {
                     "spec says, converted at 683 lm/W) or radiometric (read as W/sr and W/m^2)")
         ->capture_default_str()
         ->check(CLI::IsMember({"photometric", "radiometric"}));
+    cmd->add_flag("--strict", o.strict,
+                  "Treat every scene warning (an undecodable texture, out-of-spec data, an "
+                  "ignored extension) as an error");
+    cmd->add_option("--max-texture-pixels", o.max_texture_pixels,
+                    "Refuse (as undecodable) texture images whose header claims more pixels")
+        ->capture_default_str()
+        ->check(CLI::Range(uint64_t(1), uint64_t(1) << 40));
 }
 
 namespace {
@@ -213,6 +220,8 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     GltfLoadOptions load;
     load.rec709_to_working = s->color->rec709_to_working();
     load.variant = o.variant;
+    load.strict = o.strict;
+    load.max_texture_pixels = o.max_texture_pixels;
     try {
         load.light_units = parse_light_units(o.light_units);
     } catch (const std::invalid_argument& e) {

@@ -261,7 +261,8 @@ TEST(GltfMaterialExtensions, TextureSourcesWebpFirstThenSource) {
         {R"({"source": 0, "extensions": {"EXT_texture_webp": {}}})",
          "textures[0].extensions.EXT_texture_webp: source must be an integer image index"},
         {R"({"extensions": {"KHR_texture_basisu": {"source": 1}}})",
-         "textures[0]: has only a KHR_texture_basisu (KTX2) source, which is not supported"},
+         "textures[0]: has only a KHR_texture_basisu (KTX2) source and no fallback source "
+         "image; KTX2 cannot be decoded (no Basis Universal decoder)"},
     };
     for (const auto& [texture, message] : errors) {
         try {

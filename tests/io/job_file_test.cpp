@@ -145,6 +145,34 @@ TEST(JobFile, LightKeys) {
     }
 }
 
+TEST(JobFile, StrictAndTextureLimitKeys) {
+    const JobFile f = parse_job_file(
+        R"({"defaults": {"strict": true, "max_texture_pixels": 4096},
+            "jobs": [{"scene": "a.gltf", "strict": false}]})",
+        "/jobs/j.json");
+    EXPECT_EQ(f.defaults.strict, true);
+    EXPECT_EQ(f.defaults.max_texture_pixels, 4096u);
+    EXPECT_EQ(f.jobs[0].settings.strict, false);
+    EXPECT_FALSE(f.jobs[0].settings.max_texture_pixels);
+    const std::pair<const char*, const char*> bad[] = {
+        {R"("strict": "yes")", "j.json: jobs[0].strict: expected true or false"},
+        {R"("max_texture_pixels": 0)",
+         "j.json: jobs[0].max_texture_pixels: expected a positive integer"},
+        {R"("max_texture_pixels": -5)",
+         "j.json: jobs[0].max_texture_pixels: expected a positive integer"},
+        {R"("max_texture_pixels": 1.5)",
+         "j.json: jobs[0].max_texture_pixels: expected a positive integer"}};
+    for (const auto& [member, message] : bad) {
+        try {
+            parse_job_file(std::string(R"({"jobs": [{"scene": "a.gltf", )") + member + "}]}",
+                           "j.json");
+            FAIL() << member;
+        } catch (const SceneError& e) {
+            EXPECT_EQ(std::string(e.what()), message);
+        }
+    }
+}
+
 TEST(JobFile, FrameLists) {
     EXPECT_EQ(parse_frame_list("7"), std::vector<int>({7}));
     EXPECT_EQ(parse_frame_list("1-4"), std::vector<int>({1, 2, 3, 4}));

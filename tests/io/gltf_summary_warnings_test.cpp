@@ -1,0 +1,140 @@
+// Out-of-spec but renderable data gets one summary warning per kind and file, with a
+// count and an example: properties animated by several animations (Fox.glb), channels
+// without a target node, skin weights that do not sum to one. --strict makes each an error.
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "io/gltf_loader.h"
+#include "support/gltf_builder.h"
+#include "support/paths.h"
+
+namespace penumbra {
+namespace {
+
+size_t count(const std::string& text, const std::string& what) {
+    size_t n = 0;
+    for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+std::string warnings_of(const std::string& path) {
+    testing::internal::CaptureStderr();
+    load_gltf(path);
+    return testing::internal::GetCapturedStderr();
+}
+
+std::string strict_error(const std::string& path) {
+    GltfLoadOptions o;
+    o.strict = true;
+    try {
+        load_gltf(path, o);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// Fox.glb's three animations (Survey, Walk, Run) each drive the same 21 node properties:
+// 42 overlaps (counted from its JSON: 21 properties x 2 later animations), one line.
+TEST(GltfSummaryWarnings, FoxOverlappingAnimationsAreOneWarning) {
+    const std::string path = test::shared_path("scenes/wild/Fox/Fox.glb");
+    const std::string log = warnings_of(path);
+    EXPECT_EQ(count(log, "warning: "), 1u) << log;
+    EXPECT_EQ(count(log, path + ": animations: 42 node properties animated by several "
+                                "animations; the first animation's channel is used (nodes["),
+              1u)
+        << log;
+    EXPECT_EQ(count(log, "by animations[0] and animations[1]"), 3u) << log;  // three examples
+    EXPECT_EQ(strict_error(path).rfind(path + ": animations: 42 node properties", 0), 0u);
+}
+
+// KHR_animation_pointer channels (path "pointer") name no node property we animate.
+// (Debian's tinygltf drops channels without a node itself, with its own warning per
+// channel, which the loader counts: ParserWarningsAreCountedPerKind.)
+TEST(GltfSummaryWarnings, ChannelsWithoutTargetNodeAreOneWarning) {
+    const test::ScratchDir dir;
+    test::GltfBuilder b;
+    b.add<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
+    const int in = b.add<float>({0, 1}, test::kFloat, "SCALAR");
+    const int out = b.add<float>({0, 0, 0, 1, 1, 1}, test::kFloat, "VEC3");
+    const std::string sampler =
+        "{\"input\":" + std::to_string(in) + ",\"output\":" + std::to_string(out) + "}";
+    const std::string path =
+        b.write(dir, "untargeted.gltf",
+                test::one_mesh_scene("{\"attributes\":{\"POSITION\":0}}") +
+                    ",\"animations\":[{\"samplers\":[" + sampler +
+                    "],\"channels\":["
+                    "{\"sampler\":0,\"target\":{\"node\":0,\"path\":\"pointer\"}},"
+                    "{\"sampler\":0,\"target\":{\"node\":0,\"path\":\"pointer\"}}]}]",
+                test::BufferStorage::DataUri);
+    const std::string log = warnings_of(path);
+    EXPECT_EQ(count(log, "warning: "), 1u) << log;
+    EXPECT_NE(log.find(path + ": animations: 2 channel(s) without a target node ignored "
+                              "(animations[0].channels[0], animations[0].channels[1])"),
+              std::string::npos)
+        << log;
+}
+
+TEST(GltfSummaryWarnings, ParserWarningsAreCountedPerKind) {
+    const test::ScratchDir dir;
+    test::GltfBuilder b;
+    b.add<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
+    const int in = b.add<float>({0, 1}, test::kFloat, "SCALAR");
+    const int out = b.add<float>({0, 0, 0, 1, 1, 1}, test::kFloat, "VEC3");
+    const std::string sampler =
+        "{\"input\":" + std::to_string(in) + ",\"output\":" + std::to_string(out) + "}";
+    std::string channels;
+    for (int i = 0; i < 5; ++i)
+        channels += std::string(i ? "," : "") + "{\"sampler\":0,\"target\":{\"path\":\"scale\"}}";
+    const std::string path = b.write(dir, "nodeless.gltf",
+                                     test::one_mesh_scene("{\"attributes\":{\"POSITION\":0}}") +
+                                         ",\"animations\":[{\"samplers\":[" + sampler +
+                                         "],\"channels\":[" + channels + "]}]",
+                                     test::BufferStorage::DataUri);
+    const std::string log = warnings_of(path);
+    EXPECT_EQ(count(log, "warning: "), 2u) << log;  // tinygltf's two lines per channel
+    EXPECT_EQ(
+        count(log, path + ": `node` field is missing in animation.channels.target (5 times)\n"), 1u)
+        << log;
+    EXPECT_EQ(count(log, " (5 times)\n"), 2u) << log;
+}
+
+// A skinned triangle used by two nodes, with float WEIGHTS_0 summing to 1, 0.8 and 0.9995
+// (inside the 1e-3 allowance), and a second primitive with normalized unsigned byte
+// weights 255, 127 + 127 (within half a code per weight of 255) and 200.
+std::string skin_file(const test::ScratchDir& dir) {
+    test::GltfBuilder b;
+    const int pos = b.add<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3",
+                                 "\"min\":[0,0,0],\"max\":[1,1,0]");
+    const int joints = b.add<uint8_t>(std::vector<uint8_t>(12, 0), test::kUByte, "VEC4");
+    const int wf =
+        b.add<float>({1, 0, 0, 0, 0.5f, 0.3f, 0, 0, 0.9995f, 0, 0, 0}, test::kFloat, "VEC4");
+    const int wb = b.add<uint8_t>({255, 0, 0, 0, 127, 127, 0, 0, 200, 0, 0, 0}, test::kUByte,
+                                  "VEC4", "\"normalized\":true");
+    auto prim = [&](int w) {
+        return "{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
+               ",\"JOINTS_0\":" + std::to_string(joints) + ",\"WEIGHTS_0\":" + std::to_string(w) +
+               "}}";
+    };
+    return b.write(dir, "weights.gltf",
+                   "\"meshes\":[{\"primitives\":[" + prim(wf) + "," + prim(wb) +
+                       "]}],\"skins\":[{\"joints\":[2]}],\"nodes\":[{\"mesh\":0,\"skin\":0},"
+                       "{\"mesh\":0,\"skin\":0},{}],\"scenes\":[{\"nodes\":[0,1,2]}]",
+                   test::BufferStorage::DataUri);
+}
+
+TEST(GltfSummaryWarnings, UnnormalizedSkinWeightsAreOneWarningPerFile) {
+    const test::ScratchDir dir;
+    const std::string path = skin_file(dir);
+    const std::string log = warnings_of(path);
+    EXPECT_EQ(count(log, "warning: "), 1u) << log;
+    EXPECT_NE(log.find(path + ": skins: the skin weights of 2 vertices in 2 primitive(s) do not "
+                              "sum to 1 (meshes[0].primitives[0] vertex 1 sums to 0.800000); "
+                              "they are used as they are"),
+              std::string::npos)
+        << log;
+    EXPECT_EQ(strict_error(path).rfind(path + ": skins: the skin weights of 2 vertices", 0), 0u);
+}
+
+}  // namespace
+}  // namespace penumbra
