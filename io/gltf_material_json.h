@@ -1,8 +1,10 @@
 // Internal to io/: reading the JSON objects tinygltf leaves unparsed (material and
 // texture extensions) with their glTF defaults, checking types and the ranges the
-// extension schemas give; every problem throws naming the element and the key.
+// extension schemas give: a wrong type throws naming the element and the key, a value
+// out of range is clamped with a warning where it can be (out_of_range).
 #pragma once
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <sstream>
@@ -49,7 +51,27 @@ inline const tinygltf::Value& extension_object(const tinygltf::ExtensionMap& ext
     return it == extensions.end() ? none : it->second;
 }
 
-// An optional number of `obj`; throws when it is not a number or lies outside `range`.
+// A value outside its schema's range. Where the range is closed on that side, the data
+// is renderable: the value is clamped into it with one warning per extension key and
+// file (exporters overshoot factors, e.g. a sheen colour of 1.01), and --strict makes it
+// the error `problem` naming the element. Values no clamp can mend (attenuationDistance
+// 0, beyond float range) are that error always.
+inline float out_of_range(const GltfContext& ctx, const std::string& el, const char* key,
+                          const std::string& problem, float f, JsonRange range) {
+    const bool mendable = std::isfinite(f) && !(range.lo == -FLT_MAX && range.hi == FLT_MAX) &&
+                          !(range.open_low && f <= range.lo);
+    if (!mendable || ctx.strict) ctx.fail(el, problem + (mendable ? " [--strict]" : ""));
+    // The kind: the element without the material's index (extensions.KHR_..., or the
+    // core material's own path).
+    const size_t dot = el.find("].");
+    const std::string kind = dot == std::string::npos ? el : el.substr(dot + 2);
+    ctx.warn_once("materials", kind + ": " + key + " values outside " + range.text() +
+                                   " are clamped into it");
+    return std::clamp(f, range.lo, range.hi);
+}
+
+// An optional number of `obj`; throws when it is not a number, clamps (with a warning)
+// or throws when it lies outside `range` (out_of_range).
 inline float json_number(const GltfContext& ctx, const std::string& el, const tinygltf::Value& obj,
                          const char* key, float fallback, JsonRange range = kAnyFinite) {
     if (!obj.Has(key)) return fallback;
@@ -59,7 +81,7 @@ inline float json_number(const GltfContext& ctx, const std::string& el, const ti
     if (!range.contains(f)) {
         std::ostringstream s;
         s << key << " " << v.GetNumberAsDouble() << " is outside " << range.text();
-        ctx.fail(el, s.str());
+        return out_of_range(ctx, el, key, s.str(), f, range);
     }
     return f;
 }
@@ -78,7 +100,8 @@ inline void json_numbers(const GltfContext& ctx, const std::string& el, const ti
             std::ostringstream s;
             s << key << "[" << k << "] " << v.Get(k).GetNumberAsDouble() << " is outside "
               << range.text();
-            ctx.fail(el, s.str());
+            out[k] = out_of_range(ctx, el, key, s.str(), f, range);
+            continue;
         }
         out[k] = f;
     }

@@ -1,5 +1,6 @@
-// KHR material extension values outside their schemas' ranges, wrong JSON types and bad
-// texture references: each a SceneError naming the material, the extension and the key.
+// KHR material extension values outside their schemas' ranges (clamped with a warning,
+// an error under --strict), wrong JSON types and bad texture references (errors naming
+// the material, the extension and the key).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -12,9 +13,9 @@ namespace {
 
 using test::load_with_material;
 
-std::string error_of(const std::string& material) {
+std::string error_of(const std::string& material, bool strict = false) {
     try {
-        load_with_material(material);
+        load_with_material(material, Mat3::identity(), strict);
     } catch (const SceneError& e) {
         const std::string what = e.what();
         const size_t at = what.find("materials[0]");
@@ -27,9 +28,10 @@ std::string ext(const char* name, const std::string& body) {
     return std::string(R"({"extensions": {")") + name + "\": " + body + "}}";
 }
 
-// Each bound: the value on it loads, a value just past it is an error naming the
-// element, the key and the range.
-TEST(GltfMaterialRanges, ValuesOutsideTheSpecRangeAreErrors) {
+// Each bound: the value on it loads; a value just past it loads clamped (with a warning)
+// where the range is closed there, and is an error naming the element, the key and the
+// range under --strict, or always where no clamp mends it (an open bound, float range).
+TEST(GltfMaterialRanges, ValuesOutsideTheSpecRangeAreClampedOrErrors) {
     struct Case {
         const char *name, *ok, *bad, *message;
     };
@@ -89,10 +91,32 @@ TEST(GltfMaterialRanges, ValuesOutsideTheSpecRangeAreErrors) {
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.bad);
+        const std::string message =
+            "materials[0].extensions." + std::string(c.name) + ": " + c.message;
+        const std::string m = c.message;
+        const bool mendable = m.find("(0, +inf)") == std::string::npos &&
+                              m.find("the float range") == std::string::npos;
         EXPECT_EQ(error_of(ext(c.name, c.ok)), "(loaded)");
-        EXPECT_EQ(error_of(ext(c.name, c.bad)),
-                  "materials[0].extensions." + std::string(c.name) + ": " + c.message);
+        EXPECT_EQ(error_of(ext(c.name, c.ok), true), "(loaded)");
+        if (mendable) {
+            EXPECT_EQ(error_of(ext(c.name, c.bad)), "(loaded)");
+            EXPECT_EQ(error_of(ext(c.name, c.bad), true), message + " [--strict]");
+        } else {
+            EXPECT_EQ(error_of(ext(c.name, c.bad)), message);
+        }
     }
+}
+
+// The clamp lands on the violated bound, per component.
+TEST(GltfMaterialRanges, OvershootingValuesAreClampedToTheirBound) {
+    const Scene a = load_with_material(ext("KHR_materials_clearcoat", R"({"clearcoatFactor": 1.001})"));
+    EXPECT_EQ(a.materials[0].clearcoat, 1.0f);
+    const Scene b = load_with_material(
+        ext("KHR_materials_sheen", R"({"sheenColorFactor": [0.5, 1.01, -0.2]})"));
+    EXPECT_EQ(b.materials[0].sheen_color, Spectrum(0.5f, 1.0f, 0.0f));
+    const Scene c =
+        load_with_material(ext("KHR_materials_iridescence", R"({"iridescenceIor": 0.99})"));
+    EXPECT_EQ(c.materials[0].iridescence_ior, 1.0f);
 }
 
 TEST(GltfMaterialRanges, WrongTypesAndBadTexturesAreErrors) {

@@ -39,7 +39,7 @@ const InvalidScene kInvalidScenes[] = {
     {"index-out-of-range.gltf", "meshes[0].primitives[0]: index 7 out of range (3 vertices)"},
     {"malformed.gltf", "parse error at line 11"},
     {"material-out-of-range.gltf",
-     "materials[0].extensions.KHR_materials_sheen: sheenRoughnessFactor 1.2 is outside [0, 1]"},
+     "materials[0].extensions.KHR_materials_volume: attenuationDistance 0 is outside (0, +inf)"},
     {"missing-image.gltf", "images[0]: cannot read image file 'missing.png'"},
     {"nan-position.gltf", "meshes[0].primitives[0]: POSITION element 1 is not finite"},
     {"nan-tangent.gltf", "meshes[0].primitives[0]: TANGENT element 2 is not finite"},

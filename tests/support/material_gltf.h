@@ -41,7 +41,7 @@ inline std::string tex(int k) {
 // Materials (JSON, where @k stands for tex(k)) on one triangle, with one texture over
 // the test PNG.
 inline Scene load_with_material(const std::string& materials,
-                                const Mat3& to_working = Mat3::identity()) {
+                                const Mat3& to_working = Mat3::identity(), bool strict = false) {
     std::string json;
     for (size_t i = 0; i < materials.size(); ++i) {
         if (materials[i] != '@') {
@@ -64,6 +64,7 @@ inline Scene load_with_material(const std::string& materials,
         json + "],\n" + test::one_mesh_scene(R"({"attributes": {"POSITION": 0, "TEXCOORD_0": 1}})");
     GltfLoadOptions options;
     options.rec709_to_working = to_working;
+    options.strict = strict;
     return load_gltf(b.write(dir, "m.gltf", members, BufferStorage::DataUri), options);
 }
 
