@@ -11,25 +11,11 @@
 #include <map>
 
 #include "core/error.h"
+#include "io/gltf_accessor.h"
 
 namespace penumbra {
 
 namespace {
-
-int components(int type) {
-    switch (type) {
-        case TINYGLTF_TYPE_SCALAR:
-            return 1;
-        case TINYGLTF_TYPE_VEC2:
-            return 2;
-        case TINYGLTF_TYPE_VEC3:
-            return 3;
-        case TINYGLTF_TYPE_VEC4:
-            return 4;
-        default:
-            return 0;  // matrices are no vertex attributes
-    }
-}
 
 template <typename T>
 bool convert(const draco::PointAttribute& att, uint32_t points, int n, std::vector<uint8_t>& out) {
@@ -193,7 +179,8 @@ void decode_draco(tinygltf::Model& model, const std::string& file) {
                     fail("attribute " + name + ": the Draco mesh has no id " + std::to_string(id));
                 if (!claim(target->second, name, points)) continue;
                 const tinygltf::Accessor& a = model.accessors[size_t(target->second)];
-                const int n = components(a.type);
+                // Matrices are no vertex attributes: 0 fails below.
+                const int n = component_count(a.type) <= 4 ? component_count(a.type) : 0;
                 if (n == 0 || att->num_components() != n)
                     fail("attribute " + name + ": the accessor has " + std::to_string(n) +
                          " components, Draco id " + std::to_string(id) + " has " +
