@@ -1,0 +1,217 @@
+#!/usr/bin/env python3
+"""Equal-error efficiency of penumbra against Blender's Cycles (issue 14): each renderer
+renders each scene at several spp, its relMSE is measured against its own converged image
+(so model differences between the two do not count as error), and the table gives
+1 / (relMSE x render seconds) per renderer and the ratio penumbra / Cycles.
+
+  python3 scripts/crosscheck/efficiency.py --quick                        # a few minutes
+  python3 scripts/crosscheck/efficiency.py --scenes all --spp 16,64,256 --out /tmp/eff.md
+  python3 scripts/crosscheck/efficiency.py --embree                       # + Embree tutorial
+
+Matched in both: resolution, a one-pixel box filter, the path length (penumbra's
+--max-depth N, Cycles' N - 1 bounces of every kind), 2 threads, no denoising, no adaptive
+sampling, no clamping, Cycles' light threshold 0, the same environment image. Time is the
+render alone (penumbra's render_seconds; Cycles' render after a 1-spp warm-up with
+persistent data); whole-process times are in the JSON beside the table. References: two
+halves of --ref-spp with seeds 1001 and 1002; their difference estimates the reference's
+own relMSE, which is subtracted from each measurement and reported as a share of it.
+Renders are cached under --cache (default $XDG_CACHE_HOME or ~/.cache, penumbra-efficiency);
+docs/performance.md keeps the baseline and the method. Needs oiiotool and Debian's blender.
+"""
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+
+from efficiency_metrics import EPSILON, efficiency, median, read_rgb, reference_relmse, relmse
+from efficiency_metrics import average
+from efficiency_render import (Cache, cycles_identity, cycles_renders, penumbra_identity,
+                               penumbra_render)
+from efficiency_scenes import ALL, ROOT, prepare
+
+REF_SEEDS = (1001, 1002)
+RENDERERS = ("penumbra", "cycles")
+
+
+def parse_args(argv):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--scenes", default="all", help="comma-separated: %s, or all" % ",".join(ALL))
+    ap.add_argument("--spp", default="16,64,256", help="comma-separated sample counts")
+    ap.add_argument("--size", type=int, default=128, help="image width (height: the camera's)")
+    ap.add_argument("--ref-spp", type=int, help="reference spp (default 16 x the largest --spp)")
+    ap.add_argument("--repeats", type=int, default=3,
+                    help="renders per spp (seeds 1..R): relMSE averaged, time the median")
+    ap.add_argument("--max-depth", type=int, default=8)
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--quick", action="store_true",
+                    help="--size 64 --spp 4,16 --ref-spp 256 --repeats 1 unless given")
+    ap.add_argument("--renderers", default="penumbra,cycles")
+    ap.add_argument("--penumbra", default=os.path.join(ROOT, "build", "bin", "penumbra"))
+    ap.add_argument("--penumbra-args", default="",
+                    help="extra penumbra render options, e.g. '--sampler sobol'")
+    ap.add_argument("--reuse-references", action="store_true",
+                    help="use a cached reference made by another penumbra/Blender build")
+    ap.add_argument("--cache", default=os.path.join(
+        os.environ.get("XDG_CACHE_HOME", os.path.expanduser("~/.cache")), "penumbra-efficiency"))
+    ap.add_argument("--out", help="also write the markdown table here (and OUT.json)")
+    ap.add_argument("--timeout", type=int, default=1800, help="seconds per render")
+    ap.add_argument("--embree", action="store_true",
+                    help="also the equal-spp comparison with Embree's pathtracer tutorial")
+    args = ap.parse_args(argv)
+    if args.quick:
+        given = " ".join(argv)
+        args.size = args.size if "--size" in given else 64
+        args.spp = args.spp if "--spp" in given else "4,16"
+        args.ref_spp = args.ref_spp or 256
+        args.repeats = args.repeats if "--repeats" in given else 1
+    args.spp = sorted(int(s) for s in args.spp.split(","))
+    args.ref_spp = args.ref_spp or 16 * args.spp[-1]
+    if args.ref_spp < 2 or args.ref_spp % 2:
+        ap.error("--ref-spp must be even (two halves)")
+    args.scenes = ALL if args.scenes == "all" else args.scenes.split(",")
+    args.renderers = args.renderers.split(",")
+    return args
+
+
+def settings(args, renderer):
+    s = {"size": args.size, "max_depth": args.max_depth, "threads": args.threads}
+    if renderer == "penumbra":
+        s["extra"] = args.penumbra_args
+    return s
+
+
+def reference(args, cache, renderer):
+    """Paths of the two reference halves: this build's, or with --reuse-references any
+    build's cached ones."""
+    half = args.ref_spp // 2
+    paths = []
+    for seed in REF_SEEDS:
+        if cache.done(half, seed) or not args.reuse_references:
+            paths.append(cache.path(half, seed))
+        else:
+            paths.append(cache.other_reference(renderer, half, seed) or cache.path(half, seed))
+    return paths
+
+
+def render_scene(args, name, identities):
+    """Renders what the cache lacks; returns per renderer its caches and reference paths."""
+    prepared = prepare(name, os.path.join(args.cache, "scenes"))
+    out = {}
+    for renderer in RENDERERS:
+        if renderer not in args.renderers and renderer != "penumbra":
+            continue
+        cache = Cache(args.cache, name, prepared, identities[renderer],
+                      settings(args, renderer))
+        refs = reference(args, cache, renderer)
+        todo = [(args.ref_spp // 2, seed) for seed, p in zip(REF_SEEDS, refs)
+                if not os.path.exists(p + ".json")]
+        todo += [(spp, seed) for spp in args.spp for seed in range(1, args.repeats + 1)
+                 if not cache.done(spp, seed)]
+        if renderer == "penumbra":
+            if "penumbra" not in args.renderers:  # only the camera for Cycles
+                todo = [] if cache.done(1, 1) else [(1, 1)]
+            for spp, seed in todo:
+                log("%s: penumbra %d spp, seed %d" % (name, spp, seed))
+                penumbra_render(args, prepared, cache, spp, seed)
+            camera = cache.path(1, 1) if "penumbra" not in args.renderers else \
+                cache.path(args.spp[0], 1)
+        else:
+            if todo:
+                log("%s: Cycles %s" % (name, ", ".join("%d spp seed %d" % t for t in todo)))
+            cycles_renders(args, name, prepared, cache, camera, todo)
+        out[renderer] = (cache, refs)
+    return out
+
+
+def measure(args, cache, refs):
+    """Per spp: relMSE (reference error subtracted), its raw value, the reference's share,
+    median render and process seconds, efficiency."""
+    _, _, a = read_rgb(refs[0])
+    _, _, b = read_rgb(refs[1])
+    ref, ref_err = average(a, b), reference_relmse(a, b)
+    rows = []
+    for spp in args.spp:
+        raw = [relmse(read_rgb(cache.path(spp, s))[2], ref) for s in range(1, args.repeats + 1)]
+        times = [cache.times(spp, s) for s in range(1, args.repeats + 1)]
+        raw_mean = sum(raw) / len(raw)
+        err = raw_mean - ref_err
+        render_s = median([t["render_s"] for t in times])
+        rows.append({"spp": spp, "relmse": err, "relmse_raw": raw_mean,
+                     "ref_share": ref_err / raw_mean if raw_mean > 0 else float("nan"),
+                     "render_s": render_s, "process_s": median([t["process_s"] for t in times]),
+                     "efficiency": efficiency(err, render_s) if err > 0 else float("nan"),
+                     "sampler": times[0].get("sampler")})
+    return rows
+
+
+def fmt(v, digits=3):
+    if v is None or (isinstance(v, float) and math.isnan(v)):
+        return "n/a"
+    return "%.*g" % (digits, v)
+
+
+def table(results, args):
+    lines = ["| scene | spp | penumbra relMSE | s | efficiency | Cycles relMSE | s | efficiency "
+             "| penumbra / Cycles | ref. share P / C |", "|---" * 10 + "|"]
+    for name, per in results.items():
+        p, c = per.get("penumbra"), per.get("cycles")
+        for k, spp in enumerate(args.spp):
+            pr, cr = (p[k] if p else None), (c[k] if c else None)
+            ratio = pr["efficiency"] / cr["efficiency"] if pr and cr else float("nan")
+            lines.append("| %s | %d | %s | %s | %s | %s | %s | %s | **%s** | %s / %s |" % (
+                name, spp, fmt(pr and pr["relmse"]), fmt(pr and pr["render_s"]),
+                fmt(pr and pr["efficiency"]), fmt(cr and cr["relmse"]),
+                fmt(cr and cr["render_s"]), fmt(cr and cr["efficiency"]), fmt(ratio, 2),
+                fmt(pr and pr["ref_share"], 2), fmt(cr and cr["ref_share"], 2)))
+    return "\n".join(lines)
+
+
+def log(message):
+    print("[%s] %s" % (time.strftime("%H:%M:%S"), message), file=sys.stderr, flush=True)
+
+
+def main(argv):
+    args = parse_args(argv)
+    started = time.time()
+    identities = {"penumbra": penumbra_identity(args.penumbra)}
+    if "cycles" in args.renderers:
+        identities["cycles"] = cycles_identity()
+    results = {}
+    for name in args.scenes:
+        caches = render_scene(args, name, identities)
+        results[name] = {r: measure(args, *caches[r]) for r in args.renderers if r in caches}
+    load = os.getloadavg()
+    report = ["penumbra %s (commit %s, sampler %s%s) against Cycles (%s); %d px wide, "
+              "max depth %d, %d threads, box filter; reference %d spp; relMSE epsilon %g; "
+              "%d repeat(s) per spp (relMSE mean, time median); load average %.2f %.2f %.2f; "
+              "%.0f s in all." % (
+                  identities["penumbra"]["version"], identities["penumbra"]["commit"],
+                  next(iter(results.values()))["penumbra"][0]["sampler"] if results else "?",
+                  (", " + args.penumbra_args) if args.penumbra_args else "",
+                  identities.get("cycles", {}).get("version", "not run"), args.size,
+                  args.max_depth, args.threads, args.ref_spp, EPSILON, args.repeats,
+                  load[0], load[1], load[2], time.time() - started), "", table(results, args)]
+    worst = max((r["ref_share"] for per in results.values() for rows in per.values()
+                 for r in rows if not math.isnan(r["ref_share"])), default=0)
+    if worst > 0.1:
+        report.append("\nwarning: a reference's own error is %.0f%% of a measured relMSE "
+                      "(more than 10%%): raise --ref-spp." % (100 * worst))
+    if args.embree:
+        from efficiency_embree import embree_table
+        report += ["", embree_table(args, identities)]
+    text = "\n".join(report)
+    print(text)
+    if args.out:
+        with open(args.out, "w") as f:
+            f.write(text + "\n")
+        with open(args.out + ".json", "w") as f:
+            json.dump({"args": {k: v for k, v in vars(args).items()}, "identities": identities,
+                       "results": results}, f, indent=1)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,184 @@
+"""Renders for scripts/crosscheck/efficiency.py, cached so that a run resumes where it stopped
+and a re-run renders only what changed: one folder per scene (its file hash), renderer
+identity (penumbra: git commit and the binary's hash; Cycles: Blender's version and
+efficiency_cycles.py's hash) and settings, holding one EXR and one JSON of times per
+(spp, seed).
+"""
+import glob
+import hashlib
+import json
+import os
+import re
+import subprocess
+import time
+
+from compare_cycles import blender_env
+from efficiency_scenes import HERE, ROOT, SCENES, cycles_world, file_hash, penumbra_lighting
+
+
+def penumbra_identity(binary):
+    def git(*a):
+        return subprocess.run(["git", "-C", ROOT] + list(a), capture_output=True,
+                              text=True).stdout.strip()
+    dirty = "-dirty" if git("status", "--porcelain", "--untracked-files=no") else ""
+    version = subprocess.run([binary, "--version"], capture_output=True, text=True).stdout
+    return {"version": version.strip(), "commit": git("rev-parse", "--short", "HEAD") + dirty,
+            "key": "penumbra-%s%s-%s" % (git("rev-parse", "--short", "HEAD"), dirty,
+                                         file_hash([binary])[:8])}
+
+
+def cycles_identity():
+    out = subprocess.run(["blender", "--version"], capture_output=True, text=True,
+                         env=blender_env()).stdout
+    version = out.splitlines()[0].strip() if out else "unknown"
+    script = file_hash([os.path.join(HERE, "efficiency_cycles.py")])[:8]
+    return {"version": version, "commit": script,
+            "key": "cycles-%s-%s" % (version.replace("Blender ", "").replace(" ", ""), script)}
+
+
+def settings_key(settings):
+    return hashlib.sha256(json.dumps(settings, sort_keys=True).encode()).hexdigest()[:10]
+
+
+class Cache:
+    """Where a scene's renders by one renderer live."""
+
+    def __init__(self, root, scene, prepared, identity, settings):
+        self.scene_dir = os.path.join(root, "%s-%s" % (scene, prepared["hash"]))
+        self.settings = settings_key(settings)
+        self.dir = os.path.join(self.scene_dir, "%s-%s" % (identity["key"], self.settings))
+        os.makedirs(self.dir, exist_ok=True)
+
+    def path(self, spp, seed):
+        return os.path.join(self.dir, "spp%d-seed%d.exr" % (spp, seed))
+
+    def done(self, spp, seed):
+        p = self.path(spp, seed)
+        return os.path.exists(p) and os.path.exists(p + ".json")
+
+    def times(self, spp, seed):
+        return json.load(open(self.path(spp, seed) + ".json"))
+
+    def other_reference(self, renderer, spp, seed):
+        """The newest cached render of (spp, seed) by any version of the renderer with these
+        settings (--reuse-references)."""
+        found = glob.glob(os.path.join(self.scene_dir, "%s-*-%s" % (renderer, self.settings),
+                                       "spp%d-seed%d.exr" % (spp, seed)))
+        found = [f for f in found if os.path.exists(f + ".json")]
+        return max(found, key=os.path.getmtime) if found else None
+
+
+def penumbra_render(args, prepared, cache, spp, seed):
+    out = cache.path(spp, seed)
+    cmd = [args.penumbra, "render", prepared["scene"], "-o", out + ".tmp.exr", "--width",
+           str(args.size), "--spp", str(spp), "--seed", str(seed), "--filter", "box",
+           "--max-depth", str(args.max_depth), "--threads", str(args.threads),
+           "--timing-metadata", "--no-preview", "-q", "--overwrite"] + \
+        penumbra_lighting(prepared) + args.penumbra_args.split()
+    start = time.time()
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=args.timeout)
+    wall = time.time() - start
+    if p.returncode != 0:
+        raise RuntimeError("penumbra failed (%s): %s" % (" ".join(cmd), p.stdout + p.stderr))
+    header = exr_attributes(out + ".tmp.exr")
+    os.replace(out + ".tmp.exr", out)
+    times = {"render_s": float(header["penumbra:render_seconds"]),
+             "load_s": float(header["penumbra:load_seconds"]),
+             "build_s": float(header.get("penumbra:build_seconds", 0)),
+             "process_s": wall, "sampler": header.get("penumbra:sampler", "?")}
+    with open(out + ".json", "w") as f:
+        json.dump(times, f)
+
+
+def exr_attributes(path):
+    text = subprocess.run(["oiiotool", "--info", "-v", path], capture_output=True, text=True,
+                          check=True).stdout
+    attrs = {}
+    for line in text.splitlines()[1:]:
+        key, sep, value = line.strip().partition(": ")
+        if sep:
+            attrs[key] = value.strip('"')
+    if "worldToCamera" in attrs:
+        attrs["resolution"] = text.split(":", 1)[1].split(",")[0]
+    return attrs
+
+
+def floats(text):
+    return [float(v) for v in text.replace(",", " ").split()]
+
+
+def status_seconds(line):
+    """The "Time:MM:SS.cc" (or HH:MM:SS.cc) field of a Cycles status line, in seconds."""
+    m = re.search(r"\| Time:([0-9:.]+) \|", line)
+    if not m:
+        return None
+    seconds = 0.0
+    for part in m.group(1).split(":"):
+        seconds = 60 * seconds + float(part)
+    return seconds
+
+
+def cycles_path_tracing_seconds(log):
+    """Per render of a Blender log, the path-tracing time: Cycles' clock at its last "Sample
+    N/N" line minus at "Sample 0/N" (sync, BVH build and image loading come before; the
+    clock has 10 ms steps). Renders are told apart by their "| Finished" lines."""
+    out, first, last = [], None, None
+    for line in log.splitlines():
+        if "| Sample " in line:
+            t = status_seconds(line)
+            if t is not None:
+                first = t if first is None else first
+                last = t
+        elif line.rstrip().endswith("| Finished"):
+            if first is None:
+                raise RuntimeError("Cycles: a render without sample lines")
+            out.append(max(last - first, 0.01))
+            first = last = None
+    return out
+
+
+def cycles_renders(args, name, prepared, cache, camera_exr, todo):
+    """Renders every (spp, seed) of todo in one Blender process (one import and sync)."""
+    if not todo:
+        return
+    attrs = exr_attributes(camera_exr)
+    width, height = (int(v) for v in attrs["resolution"].split("x"))
+    job = {"scene": os.path.abspath(prepared["scene"]), "width": width, "height": height,
+           "world_to_camera": floats(attrs["worldToCamera"]),
+           "world_to_ndc": floats(attrs["worldToNDC"]), "max_depth": args.max_depth,
+           "threads": args.threads, "materials": SCENES[name]["materials"],
+           "world": cycles_world(name, prepared),
+           "renders": [{"spp": s, "seed": d, "out": cache.path(s, d) + ".tmp.exr"}
+                       for s, d in todo]}
+    job_path = os.path.join(cache.dir, "job.json")
+    with open(job_path, "w") as f:
+        json.dump(job, f)
+    start = time.time()
+    p = subprocess.run(["blender", "-b", "--factory-startup", "-P",
+                        os.path.join(HERE, "efficiency_cycles.py"), "--", job_path],
+                       capture_output=True, text=True, timeout=args.timeout * len(todo),
+                       env=blender_env())
+    wall = time.time() - start
+    info = None
+    for line in p.stdout.splitlines():
+        if line.startswith("EFFICIENCY-ERROR "):
+            raise RuntimeError("Cycles: " + line[len("EFFICIENCY-ERROR "):])
+        if line.startswith("EFFICIENCY "):
+            info = json.loads(line[len("EFFICIENCY "):])
+    if info is None:
+        tail = (p.stdout + p.stderr).strip().splitlines()[-5:]
+        raise RuntimeError("blender exit %s: %s" % (p.returncode, " / ".join(tail)))
+    render_s = cycles_path_tracing_seconds(p.stdout)
+    if len(render_s) != len(todo):
+        raise RuntimeError("Cycles: %d renders finished, %d expected" % (len(render_s), len(todo)))
+    # Whole process for one render: Blender's start and import shared out, plus that render
+    # with its sync.
+    overhead = (wall - sum(info["render_wall_s"])) / len(todo)
+    for (spp, seed), seconds, render_wall in zip(todo, render_s, info["render_wall_s"]):
+        out = cache.path(spp, seed)
+        os.replace(out + ".tmp.exr", out)
+        times = {"render_s": seconds, "render_wall_s": render_wall,
+                 "process_s": overhead + render_wall, "setup_s": info["setup_s"],
+                 "sampler": info["sampling_pattern"], "version": info["version"]}
+        with open(out + ".json", "w") as f:
+            json.dump(times, f)
