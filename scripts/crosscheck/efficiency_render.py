@@ -1,6 +1,6 @@
 """Renders for scripts/crosscheck/efficiency.py, cached so that a run resumes where it stopped
 and a re-run renders only what changed: one folder per scene (its file hash), renderer
-identity (penumbra: git commit and the binary's hash; Cycles: Blender's version and
+identity (penumbra: its version and the binary's hash; Cycles: Blender's version and
 efficiency_cycles.py's hash) and settings, holding one EXR and one JSON of times per
 (spp, seed).
 """
@@ -17,14 +17,16 @@ from efficiency_scenes import HERE, ROOT, SCENES, cycles_world, file_hash, penum
 
 
 def penumbra_identity(binary):
+    """The build decides the image and the time, so the cache key is the binary's hash (a
+    commit that changes only scripts or docs keeps the renders); the commit is recorded."""
     def git(*a):
         return subprocess.run(["git", "-C", ROOT] + list(a), capture_output=True,
                               text=True).stdout.strip()
     dirty = "-dirty" if git("status", "--porcelain", "--untracked-files=no") else ""
     version = subprocess.run([binary, "--version"], capture_output=True, text=True).stdout
     return {"version": version.strip(), "commit": git("rev-parse", "--short", "HEAD") + dirty,
-            "key": "penumbra-%s%s-%s" % (git("rev-parse", "--short", "HEAD"), dirty,
-                                         file_hash([binary])[:8])}
+            "key": "penumbra-%s-%s" % (version.split()[-1] if version.split() else "unknown",
+                                       file_hash([binary])[:12])}
 
 
 def cycles_identity():

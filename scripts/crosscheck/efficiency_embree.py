@@ -1,0 +1,74 @@
+"""Equal-spp time against Embree 3.13.5's pathtracer tutorial (Debian's embree-tools) for
+scripts/crosscheck/efficiency.py --embree: its Cornell box (cornell_box.ecs: the OBJ, pure
+Lambert, one point light) at 256 x 256, 64 spp, 8 path segments, 2 threads, against
+penumbra and Cycles on scenes/cornell-box-point.gltf (the same room from
+make_cornell_box.py, a point light, and a mirror sphere the OBJ lacks) at the same settings.
+The tutorial's time is its whole process (it loads its 36-triangle OBJ in about 50 ms).
+"""
+import copy
+import os
+import shutil
+import subprocess
+import tempfile
+import time
+
+from efficiency_metrics import median
+from efficiency_render import Cache, cycles_renders, penumbra_render
+from efficiency_scenes import prepare
+
+ECS = "/usr/share/doc/embree3/models/cornell_box.ecs"
+SIZE, SPP, SEGMENTS = 256, 64, 8
+
+
+def embree_seconds(threads, repeats):
+    """Whole-process seconds of each pathtracer run, or None when it is not installed."""
+    if not shutil.which("pathtracer") or not os.path.exists(ECS):
+        return None
+    out = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for _ in range(repeats):
+            start = time.time()
+            subprocess.run(["pathtracer", "-c", ECS, "--size", str(SIZE), str(SIZE), "--spp",
+                            str(SPP), "--max-path-length", str(SEGMENTS), "--threads",
+                            str(threads), "-o", os.path.join(tmp, "embree.ppm")],
+                           check=True, capture_output=True)
+            out.append(time.time() - start)
+    return out
+
+
+def embree_table(args, identities):
+    a = copy.copy(args)
+    a.size, a.max_depth = SIZE, SEGMENTS  # penumbra's --max-depth 8: 8 path segments
+    prepared = prepare("cornell-point", os.path.join(args.cache, "scenes"))
+    seeds = range(1, args.repeats + 1)
+    rows = []
+    pen = Cache(args.cache, "cornell-point", prepared, identities["penumbra"],
+                {"size": SIZE, "max_depth": SEGMENTS, "threads": args.threads,
+                 "extra": args.penumbra_args})
+    for seed in seeds:
+        if not pen.done(SPP, seed):
+            penumbra_render(a, prepared, pen, SPP, seed)
+    times = [pen.times(SPP, s) for s in seeds]
+    rows.append(("penumbra", median([t["render_s"] for t in times]),
+                 median([t["process_s"] for t in times])))
+    if "cycles" in args.renderers:
+        cyc = Cache(args.cache, "cornell-point", prepared, identities["cycles"],
+                    {"size": SIZE, "max_depth": SEGMENTS, "threads": args.threads})
+        cycles_renders(a, "cornell-point", prepared, cyc, pen.path(SPP, 1),
+                       [(SPP, s) for s in seeds if not cyc.done(SPP, s)])
+        times = [cyc.times(SPP, s) for s in seeds]
+        rows.append(("Cycles", median([t["render_s"] for t in times]),
+                     median([t["process_s"] for t in times])))
+    embree = embree_seconds(args.threads, args.repeats)
+    lines = ["Equal spp: Cornell box with a point light, %d x %d, %d spp, %d path segments, "
+             "%d threads; medians of %d." % (SIZE, SIZE, SPP, SEGMENTS, args.threads,
+                                             args.repeats), "",
+             "| renderer | render s | process s | render time / Embree's |", "|---|---|---|---|"]
+    for name, render_s, process_s in rows:
+        ratio = "%.2f" % (render_s / median(embree)) if embree else "n/a"
+        lines.append("| %s | %.2f | %.2f | %s |" % (name, render_s, process_s, ratio))
+    if embree:
+        lines.append("| Embree 3.13.5 pathtracer | (process) | %.2f | 1 |" % median(embree))
+    else:
+        lines.append("| Embree pathtracer | not installed (Debian: embree-tools) | | |")
+    return "\n".join(lines)

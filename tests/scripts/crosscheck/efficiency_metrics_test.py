@@ -1,0 +1,183 @@
+"""Unit tests of scripts/crosscheck/efficiency*.py on synthetic images (no renderer runs):
+relMSE and efficiency against exact values and against the 1/spp law of an unbiased
+estimator, the reference-error correction, reading images back exactly, Cycles' status
+lines, and scripts/make_many_lights.py's emitter count and determinism. Run by
+tests/scripts/efficiency_test.cpp:  python3 -m unittest efficiency_metrics_test
+"""
+import array
+import json
+import os
+import random
+import subprocess
+import sys
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
+sys.path[:0] = [os.path.join(ROOT, "scripts", "crosscheck"), os.path.join(ROOT, "scripts")]
+
+from efficiency_metrics import (EPSILON, average, efficiency, median, read_rgb,  # noqa: E402
+                                reference_relmse, relmse, write_pfm)
+from efficiency_render import cycles_path_tracing_seconds, status_seconds  # noqa: E402
+
+PIXELS = 3 * 4096
+
+
+def exact_image(rng):
+    """Radiances spread over 0.05 .. 5, so EPSILON matters for some pixels and not others."""
+    return array.array("f", [0.05 * 100 ** rng.random() for _ in range(PIXELS)])
+
+
+def render(exact, spp, rng, sigma=1.0):
+    """An unbiased 'renderer': each sample is the exact value times (1 + sigma g), g standard
+    normal; the pixel is the mean of spp samples, so its variance is (sigma x)^2 / spp."""
+    return array.array("f", [x * (1 + sigma * rng.gauss(0, 1) / spp ** 0.5) for x in exact])
+
+
+def expected_relmse(exact, spp, sigma=1.0):
+    return sum((sigma * x) ** 2 / spp / (x * x + EPSILON) for x in exact) / len(exact)
+
+
+class RelMse(unittest.TestCase):
+    def test_exact_value_of_a_known_offset(self):
+        ref = [0.0, 0.1, 1.0, 10.0]
+        image = [0.2, 0.1, 1.5, 9.0]
+        want = (0.04 / EPSILON + 0 + 0.25 / (1 + EPSILON) + 1 / (100 + EPSILON)) / 4
+        self.assertAlmostEqual(relmse(image, ref), want, places=12)
+        self.assertEqual(relmse(ref, ref), 0.0)
+
+    def test_sizes_must_agree(self):
+        with self.assertRaises(ValueError):
+            relmse([1.0, 2.0], [1.0])
+
+    def test_unbiased_estimator_matches_its_variance_and_falls_as_one_over_spp(self):
+        # 12288 values: one relMSE estimate has a relative standard deviation of about
+        # sqrt(2 / 12288) = 1.3%, so 5% bounds hold at about 4 sigma and a renderer whose
+        # error fell as 1 / spp^0.9 (16 -> 64: 3.5x instead of 4x) fails the ratio check.
+        rng = random.Random(7)
+        exact = exact_image(rng)
+        r16 = relmse(render(exact, 16, rng), exact)
+        r64 = relmse(render(exact, 64, rng), exact)
+        self.assertAlmostEqual(r16 / expected_relmse(exact, 16), 1.0, delta=0.05)
+        self.assertAlmostEqual(r64 / expected_relmse(exact, 64), 1.0, delta=0.05)
+        self.assertAlmostEqual(r16 / r64, 4.0, delta=0.3)
+
+
+class Efficiency(unittest.TestCase):
+    def test_definition(self):
+        self.assertAlmostEqual(efficiency(0.01, 2.0), 50.0)
+        self.assertEqual(efficiency(0.0, 1.0), float("inf"))
+        with self.assertRaises(ValueError):
+            efficiency(0.1, 0.0)
+
+    def test_independent_of_spp_and_ratio_of_two_renderers(self):
+        # Renderer A: 1 s per 64 spp; B: half the time per sample but twice the variance
+        # (sigma sqrt(2)), so B's efficiency is A's within the noise; C: A's variance at twice
+        # A's time, half A's efficiency.
+        rng = random.Random(11)
+        exact = exact_image(rng)
+        eff = {}
+        for spp in (16, 64):
+            eff["A", spp] = efficiency(relmse(render(exact, spp, rng), exact), spp / 64)
+            eff["B", spp] = efficiency(relmse(render(exact, spp, rng, 2 ** 0.5), exact),
+                                       spp / 128)
+            eff["C", spp] = efficiency(relmse(render(exact, spp, rng), exact), spp / 32)
+        self.assertAlmostEqual(eff["A", 16] / eff["A", 64], 1.0, delta=0.07)
+        self.assertAlmostEqual(eff["B", 64] / eff["A", 64], 1.0, delta=0.07)
+        self.assertAlmostEqual(eff["C", 64] / eff["A", 64], 0.5, delta=0.035)
+
+    def test_median(self):
+        self.assertEqual(median([3.0, 1.0, 2.0]), 2.0)
+        self.assertEqual(median([4.0, 1.0, 2.0, 3.0]), 2.5)
+
+
+class ReferenceError(unittest.TestCase):
+    def test_estimate_from_two_halves_and_its_correction(self):
+        # A reference of two 256-spp halves measured against the exact image, and a 16-spp
+        # image measured against the reference: measured - reference estimate = the true
+        # relMSE against the exact image (within the estimates' noise, 5%).
+        rng = random.Random(3)
+        exact = exact_image(rng)
+        a, b = render(exact, 256, rng), render(exact, 256, rng)
+        ref = average(a, b)
+        self.assertAlmostEqual(reference_relmse(a, b) / relmse(ref, exact), 1.0, delta=0.05)
+        self.assertAlmostEqual(reference_relmse(a, b) / expected_relmse(exact, 512), 1.0,
+                               delta=0.05)
+        image = render(exact, 16, rng)
+        corrected = relmse(image, ref) - reference_relmse(a, b)
+        self.assertAlmostEqual(corrected / relmse(image, exact), 1.0, delta=0.05)
+        # Without the correction the error is overstated by the reference's share: 1/32.
+        self.assertGreater(relmse(image, ref) / relmse(image, exact), 1.02)
+
+
+class Images(unittest.TestCase):
+    def test_exr_values_come_back_exactly(self):
+        rng = random.Random(5)
+        w, h = 5, 3  # not square: rows and columns must not be swapped
+        rgb = array.array("f", [rng.uniform(0, 50) for _ in range(3 * w * h)])
+        with tempfile.TemporaryDirectory() as tmp:
+            pfm, exr = os.path.join(tmp, "a.pfm"), os.path.join(tmp, "a.exr")
+            write_pfm(pfm, w, h, rgb)
+            subprocess.run(["oiiotool", pfm, "-d", "float", "-o", exr], check=True,
+                           capture_output=True)
+            width, height, back = read_rgb(exr)
+        self.assertEqual((width, height), (w, h))
+        self.assertEqual(list(back), list(rgb))
+
+
+class CyclesLog(unittest.TestCase):
+    LOG = """Fra:1 Mem:9.60M | Time:00:00.00 | Mem:0.00M | Scene, ViewLayer | Synchronizing object | Cube
+Fra:1 Mem:9.85M | Time:00:00.31 | Mem:0.00M | Scene, ViewLayer | Updating Scene BVH
+Fra:1 Mem:10.21M | Time:00:00.40 | Mem:0.76M | Scene, ViewLayer | Sample 0/64
+Fra:1 Mem:10.36M | Time:00:00.50 | Remaining:00:00.05 | Mem:0.90M | Scene, ViewLayer | Sample 1/64
+Fra:1 Mem:10.42M | Time:00:02.37 | Mem:0.90M | Scene, ViewLayer | Sample 64/64
+Fra:1 Mem:10.42M | Time:00:02.37 | Mem:0.90M | Scene, ViewLayer | Finished
+Saved: 'x.exr'
+Fra:1 Mem:10.21M | Time:00:00.00 | Mem:0.76M | Scene, ViewLayer | Sample 0/256
+Fra:1 Mem:10.42M | Time:01:02:03.25 | Mem:0.90M | Scene, ViewLayer | Sample 256/256
+Fra:1 Mem:10.42M | Time:01:02:03.25 | Mem:0.90M | Scene, ViewLayer | Finished
+"""
+
+    def test_path_tracing_time_per_render_without_sync(self):
+        self.assertEqual(status_seconds("| Time:01:02.50 |"), 62.5)
+        self.assertIsNone(status_seconds("no time here"))
+        times = cycles_path_tracing_seconds(self.LOG)
+        self.assertEqual(len(times), 2)
+        self.assertAlmostEqual(times[0], 1.97)
+        self.assertAlmostEqual(times[1], 3723.25)
+
+
+class ManyLights(unittest.TestCase):
+    def make(self, out, *extra):
+        subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "make_many_lights.py"),
+                        out] + list(extra), check=True)
+        with open(out) as f:
+            return json.load(f)
+
+    def emissive_triangles(self, doc):
+        emissive = {i for i, m in enumerate(doc["materials"]) if max(m.get("emissiveFactor",
+                                                                           [0, 0, 0])) > 0}
+        count = 0
+        for mesh in doc["meshes"]:
+            for p in mesh["primitives"]:
+                if p["material"] in emissive:
+                    count += doc["accessors"][p["indices"]]["count"] // 3
+        return count, len(emissive)
+
+    def test_count_and_determinism(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            a, b = os.path.join(tmp, "a.gltf"), os.path.join(tmp, "b.gltf")
+            doc = self.make(a)
+            self.make(b)
+            with open(a, "rb") as fa, open(b, "rb") as fb:
+                self.assertEqual(fa.read(), fb.read())
+            self.assertEqual(self.emissive_triangles(doc), (10000, 64))
+            self.assertEqual(self.emissive_triangles(self.make(b, "--count", "123"))[0], 123)
+            strengths = [m["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"]
+                         for m in doc["materials"] if "emissiveFactor" in m]
+            self.assertAlmostEqual(max(strengths) / min(strengths), 100.0, places=3)
+
+
+if __name__ == "__main__":
+    unittest.main()
