@@ -112,12 +112,13 @@ def render_scene(args, name, identities):
                  if not cache.done(spp, seed)]
         if renderer == "penumbra":
             if "penumbra" not in args.renderers:  # only the camera for Cycles
-                todo = [] if cache.done(1, 1) else [(1, 1)]
+                todo = []
+            # 1 spp: the camera for Cycles, and penumbra's fixed cost inside render_seconds.
+            todo += [] if cache.done(1, 1) else [(1, 1)]
             for spp, seed in todo:
                 log("%s: penumbra %d spp, seed %d" % (name, spp, seed))
                 penumbra_render(args, prepared, cache, spp, seed)
-            camera = cache.path(1, 1) if "penumbra" not in args.renderers else \
-                cache.path(args.spp[0], 1)
+            camera = cache.path(1, 1)
         else:
             if todo:
                 log("%s: Cycles %s" % (name, ", ".join("%d spp seed %d" % t for t in todo)))
@@ -153,20 +154,35 @@ def fmt(v, digits=3):
     return "%.*g" % (digits, v)
 
 
+def seconds(row):
+    return "n/a" if not row else "%s (%s)" % (fmt(row["render_s"]), fmt(row["process_s"], 2))
+
+
 def table(results, args):
-    lines = ["| scene | spp | penumbra relMSE | s | efficiency | Cycles relMSE | s | efficiency "
-             "| penumbra / Cycles | ref. share P / C |", "|---" * 10 + "|"]
+    lines = ["| scene | spp | penumbra relMSE | s (process) | efficiency | Cycles relMSE "
+             "| s (process) | efficiency | penumbra / Cycles | ref. share P / C |",
+             "|---" * 10 + "|"]
     for name, per in results.items():
         p, c = per.get("penumbra"), per.get("cycles")
         for k, spp in enumerate(args.spp):
             pr, cr = (p[k] if p else None), (c[k] if c else None)
             ratio = pr["efficiency"] / cr["efficiency"] if pr and cr else float("nan")
             lines.append("| %s | %d | %s | %s | %s | %s | %s | %s | **%s** | %s / %s |" % (
-                name, spp, fmt(pr and pr["relmse"]), fmt(pr and pr["render_s"]),
-                fmt(pr and pr["efficiency"]), fmt(cr and cr["relmse"]),
-                fmt(cr and cr["render_s"]), fmt(cr and cr["efficiency"]), fmt(ratio, 2),
+                name, spp, fmt(pr and pr["relmse"]), seconds(pr), fmt(pr and pr["efficiency"]),
+                fmt(cr and cr["relmse"]), seconds(cr), fmt(cr and cr["efficiency"]), fmt(ratio, 2),
                 fmt(pr and pr["ref_share"], 2), fmt(cr and cr["ref_share"], 2)))
+    lines.append("")
+    lines.append("penumbra's render_seconds at 1 spp (fixed start-up inside the render time): " +
+                 ", ".join("%s %s s" % (n, fmt(r["penumbra_1spp_s"], 2))
+                           for n, r in results.items()) + ".")
     return "\n".join(lines)
+
+
+def sampler(results, renderer):
+    for per in results.values():
+        if per.get(renderer):
+            return per[renderer][0]["sampler"]
+    return "?"
 
 
 def log(message):
@@ -183,19 +199,23 @@ def main(argv):
     for name in args.scenes:
         caches = render_scene(args, name, identities)
         results[name] = {r: measure(args, *caches[r]) for r in args.renderers if r in caches}
+        results[name]["penumbra_1spp_s"] = caches["penumbra"][0].times(1, 1)["render_s"]
     load = os.getloadavg()
-    report = ["penumbra %s (commit %s, sampler %s%s) against Cycles (%s); %d px wide, "
+    report = ["penumbra %s (commit %s, sampler %s%s) against Cycles (%s, sampling pattern %s, "
+              "no light tree in 3.4); %d px wide, "
               "max depth %d, %d threads, box filter; reference %d spp; relMSE epsilon %g; "
               "%d repeat(s) per spp (relMSE mean, time median); load average %.2f %.2f %.2f; "
               "%.0f s in all." % (
                   identities["penumbra"]["version"], identities["penumbra"]["commit"],
-                  next(iter(results.values()))["penumbra"][0]["sampler"] if results else "?",
+                  sampler(results, "penumbra"),
                   (", " + args.penumbra_args) if args.penumbra_args else "",
-                  identities.get("cycles", {}).get("version", "not run"), args.size,
+                  identities.get("cycles", {}).get("version", "not run"),
+                  sampler(results, "cycles"), args.size,
                   args.max_depth, args.threads, args.ref_spp, EPSILON, args.repeats,
                   load[0], load[1], load[2], time.time() - started), "", table(results, args)]
     worst = max((r["ref_share"] for per in results.values() for rows in per.values()
-                 for r in rows if not math.isnan(r["ref_share"])), default=0)
+                 if isinstance(rows, list) for r in rows if not math.isnan(r["ref_share"])),
+                default=0)
     if worst > 0.1:
         report.append("\nwarning: a reference's own error is %.0f%% of a measured relMSE "
                       "(more than 10%%): raise --ref-spp." % (100 * worst))
