@@ -157,7 +157,17 @@ Ray spawn_ray(const SurfacePoint& sp, Vec3 w, float dist, float time) {
                             outside ? sp.ng : -sp.ng);
     r.d = w;
     r.tmin = 0;
-    r.tmax = std::isfinite(dist) ? dist * (1 - 1e-4f) : std::numeric_limits<float>::infinity();
+    r.tmax = std::numeric_limits<float>::infinity();
+    if (std::isfinite(dist)) {
+        // A shadow ray to a point: aimed from the moved origin at the point itself
+        // (pbrt-v4's SpawnRayTo). Kept parallel to w, a lifted origin would carry the
+        // segment's end past the point, into the area light sampled there, which then
+        // blocks its own light (a smooth sphere under a panel lost 60% of its direct light).
+        const Vec3 to = sp.p + w * dist - r.o;
+        const float len = length(to);
+        r.d = len > 0 ? to / len : w;
+        r.tmax = len * (1 - 1e-4f);
+    }
     r.time = time;
     return r;
 }

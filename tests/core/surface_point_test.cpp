@@ -1,11 +1,13 @@
 // Robust secondary rays (core/surface_point.*) on the hard cases of scenes/hard/: no
 // self-shadowing acne on a lit plane at any distance from the origin and any light
-// angle, no light leaking between sheets 1e-4 apart, and Hanika's lifted origin.
+// angle, no light leaking between sheets 1e-4 apart, Hanika's lifted origin, and shadow
+// rays from a lifted origin that stop short of the point they were aimed at.
 #include "core/surface_point.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "core/camera/orthographic_camera.h"
 #include "core/lights/directional_light.h"
@@ -45,6 +47,31 @@ TEST(SmoothSurfacePoint, ConvexFacetIsLiftedTowardsTheSphere) {
     const Vec3 zero[3] = {};
     const Vec3 r = smooth_surface_point(p, v, zero, b);
     EXPECT_EQ(r.x, p.x);
+}
+
+TEST(SpawnRay, ShadowRayFromALiftedOriginStopsShortOfItsTarget) {
+    // A point on a smooth sphere's facet, lifted 1e-3 along the normal (about what a
+    // 48-segment sphere of radius 0.3 gets), aimed at a light point 0.8 away. Kept parallel
+    // to w, the segment ended 1e-3 beyond the target, inside the area light sampled
+    // there, which then shadowed its own light (efficiency.py's Lambertian Cornell box).
+    SurfacePoint sp;
+    sp.p = {0.35f, 0.2f, 0.3f};
+    sp.ng = sp.ns = normalize(Vec3(0.1f, 1, 0.05f));
+    sp.p_smooth = sp.p + sp.ns * 1e-3f;
+    sp.p_error = Vec3(1e-7f);
+    const Vec3 target = {0.1f, 0.999f, 0.1f};
+    const float dist = length(target - sp.p);
+    const Vec3 w = (target - sp.p) / dist;
+    const Ray r = spawn_ray(sp, w, dist, 0.0f);
+    const Vec3 end = r.o + r.d * r.tmax;
+    EXPECT_GT(dot(target - end, r.d), 0.0f) << "the segment reaches past its target";
+    EXPECT_LT(length(target - end), 1e-3f * dist);
+    EXPECT_NEAR(length(r.d), 1.0f, 1e-6f);
+    EXPECT_GT(dot(r.o - sp.p, sp.ns), 0.5e-3f);  // still from the lifted origin
+    // Rays without an end (BSDF continuations) keep their direction.
+    const Ray open = spawn_ray(sp, w, std::numeric_limits<float>::infinity(), 0.0f);
+    EXPECT_EQ(open.d.x, w.x);
+    EXPECT_EQ(open.tmax, std::numeric_limits<float>::infinity());
 }
 
 // The plane's unit normal in world space and a unit tangent.
