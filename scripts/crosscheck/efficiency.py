@@ -89,7 +89,7 @@ def reference(args, cache, renderer):
     half = args.ref_spp // 2
     paths = []
     for seed in REF_SEEDS:
-        if cache.done(half, seed) or not args.reuse_references:
+        if cache.done(half, seed, need_cpu=False) or not args.reuse_references:
             paths.append(cache.path(half, seed))
         else:
             paths.append(cache.other_reference(renderer, half, seed) or cache.path(half, seed))
@@ -129,7 +129,11 @@ def render_scene(args, name, identities):
 
 def measure(args, cache, refs):
     """Per spp: relMSE (reference error subtracted), its raw value, the reference's share,
-    median render and process seconds, efficiency."""
+    median render, process and CPU seconds, and the efficiencies by render and CPU seconds.
+    CPU seconds are those of N spp less those of a 1-spp render (penumbra: its 1-spp
+    process, so load, build and start-up go; Cycles: a 1-spp render in the same process,
+    so sync goes): the cost of the samples, robust on a loaded machine, where wall time
+    is not."""
     _, _, a = read_rgb(refs[0])
     _, _, b = read_rgb(refs[1])
     ref, ref_err = average(a, b), reference_relmse(a, b)
@@ -137,13 +141,19 @@ def measure(args, cache, refs):
     for spp in args.spp:
         raw = [relmse(read_rgb(cache.path(spp, s))[2], ref) for s in range(1, args.repeats + 1)]
         times = [cache.times(spp, s) for s in range(1, args.repeats + 1)]
+        cpu_1 = [t.get("cpu_1spp_s", cache.times(1, 1)["cpu_s"] if cache.done(1, 1) else 0)
+                 for t in times]
         raw_mean = sum(raw) / len(raw)
         err = raw_mean - ref_err
         render_s = median([t["render_s"] for t in times])
+        cpu_s = median([t["cpu_s"] - c1 for t, c1 in zip(times, cpu_1)])
         rows.append({"spp": spp, "relmse": err, "relmse_raw": raw_mean,
                      "ref_share": ref_err / raw_mean if raw_mean > 0 else float("nan"),
                      "render_s": render_s, "process_s": median([t["process_s"] for t in times]),
+                     "cpu_s": cpu_s,
                      "efficiency": efficiency(err, render_s) if err > 0 else float("nan"),
+                     "efficiency_cpu": efficiency(err, cpu_s) if err > 0 and cpu_s > 0
+                     else float("nan"),
                      "sampler": times[0].get("sampler")})
     return rows
 
@@ -159,18 +169,23 @@ def seconds(row):
 
 
 def table(results, args):
-    lines = ["| scene | spp | penumbra relMSE | s (process) | efficiency | Cycles relMSE "
-             "| s (process) | efficiency | penumbra / Cycles | ref. share P / C |",
-             "|---" * 10 + "|"]
+    lines = ["| scene | spp | penumbra relMSE | s (process) | cpu-s | efficiency | Cycles relMSE "
+             "| s (process) | cpu-s | efficiency | penumbra / Cycles | by cpu-s | ref. share "
+             "P / C |", "|---" * 13 + "|"]
     for name, per in results.items():
         p, c = per.get("penumbra"), per.get("cycles")
         for k, spp in enumerate(args.spp):
             pr, cr = (p[k] if p else None), (c[k] if c else None)
             ratio = pr["efficiency"] / cr["efficiency"] if pr and cr else float("nan")
-            lines.append("| %s | %d | %s | %s | %s | %s | %s | %s | **%s** | %s / %s |" % (
-                name, spp, fmt(pr and pr["relmse"]), seconds(pr), fmt(pr and pr["efficiency"]),
-                fmt(cr and cr["relmse"]), seconds(cr), fmt(cr and cr["efficiency"]), fmt(ratio, 2),
-                fmt(pr and pr["ref_share"], 2), fmt(cr and cr["ref_share"], 2)))
+            ratio_cpu = pr["efficiency_cpu"] / cr["efficiency_cpu"] if pr and cr else \
+                float("nan")
+            lines.append("| %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | **%s** | **%s** "
+                         "| %s / %s |" % (
+                             name, spp, fmt(pr and pr["relmse"]), seconds(pr),
+                             fmt(pr and pr["cpu_s"]), fmt(pr and pr["efficiency"]),
+                             fmt(cr and cr["relmse"]), seconds(cr), fmt(cr and cr["cpu_s"]),
+                             fmt(cr and cr["efficiency"]), fmt(ratio, 2), fmt(ratio_cpu, 2),
+                             fmt(pr and pr["ref_share"], 2), fmt(cr and cr["ref_share"], 2)))
     lines.append("")
     lines.append("penumbra's render_seconds at 1 spp (fixed start-up inside the render time): " +
                  ", ".join("%s %s s" % (n, fmt(r["penumbra_1spp_s"], 2))

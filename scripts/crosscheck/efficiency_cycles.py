@@ -20,6 +20,10 @@ import warnings
 
 import bpy
 import numpy
+
+# The cache key of these renders (efficiency_render.py): raise it when a change here alters
+# Cycles' images or times, not for comments or reporting.
+SETUP_VERSION = 1
 from mathutils import Matrix
 
 # Debian's Blender 3.4 glTF importer still uses numpy.bool, which numpy 1.24 removed.
@@ -172,14 +176,27 @@ settings.color_depth = "32"
 settings.exr_codec = "ZIP"
 
 setup_s = time.time() - process_start
-walls = []
-for r in job["renders"]:
-    c.samples = r["spp"]
-    c.seed = r["seed"]
-    start = time.time()
+
+
+def render(spp, seed):
+    """Wall and CPU seconds of one render (process_time counts every thread of Blender's
+    process, so Cycles' workers too)."""
+    c.samples = spp
+    c.seed = seed
+    wall, cpu = time.time(), time.process_time()
     bpy.ops.render.render(write_still=False)
-    walls.append(time.time() - start)
+    return time.time() - wall, time.process_time() - cpu
+
+
+# A 1-spp render first: its CPU time (sync and one sample) is what the driver subtracts to
+# get the CPU cost of the samples alone, as it does with penumbra's 1-spp render.
+_, cpu_1spp = render(1, 0)
+walls, cpus = [], []
+for r in job["renders"]:
+    wall, cpu = render(r["spp"], r["seed"])
+    walls.append(wall)
+    cpus.append(cpu)
     bpy.data.images["Render Result"].save_render(r["out"])
 print("EFFICIENCY " + json.dumps({
-    "setup_s": setup_s, "render_wall_s": walls, "sampling_pattern": c.sampling_pattern,
-    "version": bpy.app.version_string}))
+    "setup_s": setup_s, "render_wall_s": walls, "render_cpu_s": cpus, "cpu_1spp_s": cpu_1spp,
+    "sampling_pattern": c.sampling_pattern, "version": bpy.app.version_string}))

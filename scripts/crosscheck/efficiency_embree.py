@@ -13,7 +13,7 @@ import tempfile
 import time
 
 from efficiency_metrics import median
-from efficiency_render import Cache, cycles_renders, penumbra_render
+from efficiency_render import Cache, children_cpu, cycles_renders, penumbra_render
 from efficiency_scenes import prepare
 
 ECS = "/usr/share/doc/embree3/models/cornell_box.ecs"
@@ -21,18 +21,18 @@ SIZE, SPP, SEGMENTS = 256, 64, 8
 
 
 def embree_seconds(threads, repeats):
-    """Whole-process seconds of each pathtracer run, or None when it is not installed."""
+    """(wall, CPU) seconds of each whole pathtracer run, or None when it is not installed."""
     if not shutil.which("pathtracer") or not os.path.exists(ECS):
         return None
     out = []
     with tempfile.TemporaryDirectory() as tmp:
         for _ in range(repeats):
-            start = time.time()
+            start, cpu = time.time(), children_cpu()
             subprocess.run(["pathtracer", "-c", ECS, "--size", str(SIZE), str(SIZE), "--spp",
                             str(SPP), "--max-path-length", str(SEGMENTS), "--threads",
                             str(threads), "-o", os.path.join(tmp, "embree.ppm")],
                            check=True, capture_output=True)
-            out.append(time.time() - start)
+            out.append((time.time() - start, children_cpu() - cpu))
     return out
 
 
@@ -50,7 +50,7 @@ def embree_table(args, identities):
             penumbra_render(a, prepared, pen, SPP, seed)
     times = [pen.times(SPP, s) for s in seeds]
     rows.append(("penumbra", median([t["render_s"] for t in times]),
-                 median([t["process_s"] for t in times])))
+                 median([t["process_s"] for t in times]), median([t["cpu_s"] for t in times])))
     if "cycles" in args.renderers:
         cyc = Cache(args.cache, "cornell-point", prepared, identities["cycles"],
                     {"size": SIZE, "max_depth": SEGMENTS, "threads": args.threads})
@@ -58,17 +58,22 @@ def embree_table(args, identities):
                        [(SPP, s) for s in seeds if not cyc.done(SPP, s)])
         times = [cyc.times(SPP, s) for s in seeds]
         rows.append(("Cycles", median([t["render_s"] for t in times]),
-                     median([t["process_s"] for t in times])))
+                     median([t["process_s"] for t in times]), median([t["cpu_s"] for t in times])))
     embree = embree_seconds(args.threads, args.repeats)
     lines = ["Equal spp: Cornell box with a point light, %d x %d, %d spp, %d path segments, "
-             "%d threads; medians of %d." % (SIZE, SIZE, SPP, SEGMENTS, args.threads,
-                                             args.repeats), "",
-             "| renderer | render s | process s | render time / Embree's |", "|---|---|---|---|"]
-    for name, render_s, process_s in rows:
-        ratio = "%.2f" % (render_s / median(embree)) if embree else "n/a"
-        lines.append("| %s | %.2f | %.2f | %s |" % (name, render_s, process_s, ratio))
+             "%d threads; medians of %d. CPU seconds: the whole process for penumbra and "
+             "Embree, the render with its sync for Cycles." % (
+                 SIZE, SIZE, SPP, SEGMENTS, args.threads, args.repeats), "",
+             "| renderer | render s | process s | cpu-s | render s / Embree's process s "
+             "| cpu-s / Embree's |", "|---|---|---|---|---|---|"]
+    e_wall = median([w for w, _ in embree]) if embree else None
+    e_cpu = median([c for _, c in embree]) if embree else None
+    for name, render_s, process_s, cpu_s in rows:
+        lines.append("| %s | %.2f | %.2f | %.2f | %s | %s |" % (
+            name, render_s, process_s, cpu_s, "%.2f" % (render_s / e_wall) if embree else "n/a",
+            "%.2f" % (cpu_s / e_cpu) if embree else "n/a"))
     if embree:
-        lines.append("| Embree 3.13.5 pathtracer | (process) | %.2f | 1 |" % median(embree))
+        lines.append("| Embree 3.13.5 pathtracer | | %.2f | %.2f | 1 | 1 |" % (e_wall, e_cpu))
     else:
-        lines.append("| Embree pathtracer | not installed (Debian: embree-tools) | | |")
+        lines.append("| Embree pathtracer | not installed (Debian: embree-tools) | | | | |")
     return "\n".join(lines)

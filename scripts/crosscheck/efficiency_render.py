@@ -1,7 +1,7 @@
 """Renders for scripts/crosscheck/efficiency.py, cached so that a run resumes where it stopped
 and a re-run renders only what changed: one folder per scene (its file hash), renderer
 identity (penumbra: its version and the binary's hash; Cycles: Blender's version and
-efficiency_cycles.py's hash) and settings, holding one EXR and one JSON of times per
+efficiency_cycles.py's SETUP_VERSION) and settings, holding one EXR and one JSON of times per
 (spp, seed).
 """
 import glob
@@ -9,6 +9,7 @@ import hashlib
 import json
 import os
 import re
+import resource
 import subprocess
 import time
 
@@ -33,9 +34,10 @@ def cycles_identity():
     out = subprocess.run(["blender", "--version"], capture_output=True, text=True,
                          env=blender_env()).stdout
     version = out.splitlines()[0].strip() if out else "unknown"
-    script = file_hash([os.path.join(HERE, "efficiency_cycles.py")])[:8]
-    return {"version": version, "commit": script,
-            "key": "cycles-%s-%s" % (version.replace("Blender ", "").replace(" ", ""), script)}
+    with open(os.path.join(HERE, "efficiency_cycles.py")) as f:
+        setup = re.search(r"^SETUP_VERSION = (\d+)", f.read(), re.M).group(1)
+    return {"version": version, "commit": "setup v" + setup,
+            "key": "cycles-%s-v%s" % (version.replace("Blender ", "").replace(" ", ""), setup)}
 
 
 def settings_key(settings):
@@ -54,9 +56,12 @@ class Cache:
     def path(self, spp, seed):
         return os.path.join(self.dir, "spp%d-seed%d.exr" % (spp, seed))
 
-    def done(self, spp, seed):
+    def done(self, spp, seed, need_cpu=True):
+        """Rendered, and timed with CPU seconds unless need_cpu is False (references)."""
         p = self.path(spp, seed)
-        return os.path.exists(p) and os.path.exists(p + ".json")
+        if not (os.path.exists(p) and os.path.exists(p + ".json")):
+            return False
+        return not need_cpu or "cpu_s" in self.times(spp, seed)
 
     def times(self, spp, seed):
         return json.load(open(self.path(spp, seed) + ".json"))
@@ -77,9 +82,9 @@ def penumbra_render(args, prepared, cache, spp, seed):
            "--max-depth", str(args.max_depth), "--threads", str(args.threads),
            "--timing-metadata", "--no-preview", "-q", "--overwrite"] + \
         penumbra_lighting(prepared) + args.penumbra_args.split()
-    start = time.time()
+    start, cpu = time.time(), children_cpu()
     p = subprocess.run(cmd, capture_output=True, text=True, timeout=args.timeout)
-    wall = time.time() - start
+    wall, cpu = time.time() - start, children_cpu() - cpu
     if p.returncode != 0:
         raise RuntimeError("penumbra failed (%s): %s" % (" ".join(cmd), p.stdout + p.stderr))
     header = exr_attributes(out + ".tmp.exr")
@@ -87,9 +92,15 @@ def penumbra_render(args, prepared, cache, spp, seed):
     times = {"render_s": float(header["penumbra:render_seconds"]),
              "load_s": float(header["penumbra:load_seconds"]),
              "build_s": float(header.get("penumbra:build_seconds", 0)),
-             "process_s": wall, "sampler": header.get("penumbra:sampler", "?")}
+             "process_s": wall, "cpu_s": cpu, "sampler": header.get("penumbra:sampler", "?")}
     with open(out + ".json", "w") as f:
         json.dump(times, f)
+
+
+def children_cpu():
+    """User + system CPU seconds of this process's finished children."""
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
 
 
 def exr_attributes(path):
@@ -170,17 +181,19 @@ def cycles_renders(args, name, prepared, cache, camera_exr, todo):
     if info is None:
         tail = (p.stdout + p.stderr).strip().splitlines()[-5:]
         raise RuntimeError("blender exit %s: %s" % (p.returncode, " / ".join(tail)))
-    render_s = cycles_path_tracing_seconds(p.stdout)
+    render_s = cycles_path_tracing_seconds(p.stdout)[1:]  # the first: the 1-spp render
     if len(render_s) != len(todo):
         raise RuntimeError("Cycles: %d renders finished, %d expected" % (len(render_s), len(todo)))
     # Whole process for one render: Blender's start and import shared out, plus that render
     # with its sync.
     overhead = (wall - sum(info["render_wall_s"])) / len(todo)
-    for (spp, seed), seconds, render_wall in zip(todo, render_s, info["render_wall_s"]):
+    for (spp, seed), seconds, render_wall, cpu in zip(todo, render_s, info["render_wall_s"],
+                                                       info["render_cpu_s"]):
         out = cache.path(spp, seed)
         os.replace(out + ".tmp.exr", out)
         times = {"render_s": seconds, "render_wall_s": render_wall,
                  "process_s": overhead + render_wall, "setup_s": info["setup_s"],
+                 "cpu_s": cpu, "cpu_1spp_s": info["cpu_1spp_s"],
                  "sampler": info["sampling_pattern"], "version": info["version"]}
         with open(out + ".json", "w") as f:
             json.dump(times, f)
