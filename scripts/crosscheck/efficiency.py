@@ -11,10 +11,11 @@ renders each scene at several spp, its relMSE is measured against its own conver
 Matched in both: resolution, a one-pixel box filter, the path length (penumbra's
 --max-depth N, Cycles' N - 1 bounces of every kind), 2 threads, no denoising, no adaptive
 sampling, no clamping, Cycles' light threshold 0, the same environment image. Time is the
-render alone (penumbra's render_seconds; Cycles' render after a 1-spp warm-up with
-persistent data); whole-process times are in the JSON beside the table. References: two
-halves of --ref-spp with seeds 1001 and 1002; their difference estimates the reference's
-own relMSE, which is subtracted from each measurement and reported as a share of it.
+render alone (penumbra's render_seconds; Cycles' path-tracing clock, without sync), with
+the whole process's in parentheses, and CPU seconds (N spp less a 1-spp render), which a
+loaded machine distorts far less. References: two halves of --ref-spp with seeds 1001
+and 1002; their difference estimates the reference's own relMSE, which is subtracted
+from each measurement and reported as a share of it.
 Renders are cached under --cache (default $XDG_CACHE_HOME or ~/.cache, penumbra-efficiency);
 docs/performance.md keeps the baseline and the method. Needs oiiotool and Debian's blender.
 """
