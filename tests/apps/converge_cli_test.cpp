@@ -71,11 +71,13 @@ std::vector<Row> read_csv(const std::string& path) {
     std::istringstream in(read_text(path));
     std::string line;
     std::getline(in, line);
-    EXPECT_EQ(line, "config,spp,seconds,cpu_seconds,mse,relmse,mse_x_time,relmse_x_time");
+    EXPECT_EQ(line,
+              "config,spp,seconds,cpu_seconds,mse,relmse,mse_x_time,relmse_x_time,mean_spp,"
+              "target_error");
     std::vector<Row> rows;
     while (std::getline(in, line)) {
         std::istringstream fields(line);
-        std::string f[8];
+        std::string f[10];
         for (std::string& v : f) std::getline(fields, v, ',');
         Row r{f[0], std::stod(f[1]), std::stod(f[2]), std::stod(f[4]), std::stod(f[5]),
               std::stod(f[6])};
@@ -84,6 +86,9 @@ std::vector<Row> read_csv(const std::string& path) {
         const double relmse_x_time = std::stod(f[7]);
         EXPECT_NEAR(r.mse_x_time, r.mse * r.seconds, 1e-4 * r.mse * r.seconds + 1e-12);
         EXPECT_NEAR(relmse_x_time, r.relmse * r.seconds, 1e-4 * r.relmse * r.seconds + 1e-12);
+        // Without --target-error every pixel takes the checkpoint's spp.
+        EXPECT_EQ(std::stod(f[8]), r.spp);
+        EXPECT_EQ(std::stod(f[9]), 0.0);
         rows.push_back(r);
     }
     return rows;
