@@ -46,7 +46,16 @@ bool render_samples(const RenderContext& ctx, const Camera& camera,
                               hash_values(options.seed, 0x68616c76657331ull))
                : nullptr};
 
-    const int ts = std::max(1, options.tile_size);
+    const int threads = options.threads > 0 ? options.threads
+                                            : tbb::this_task_arena::max_concurrency();
+    // Work items: tiles, split further (down to 4x4) until there are at least 32 per
+    // thread, so a small image or a pass of few samples (the first passes render 1, 1,
+    // 2 spp) still keeps every thread busy to the end of the pass; TBB steals the
+    // rest. The image does not depend on it: each pixel's samples stay in index order
+    // in one work item.
+    int ts = std::max(1, options.tile_size);
+    auto tile_count = [&](int size) { return ((w + size - 1) / size) * ((h + size - 1) / size); };
+    while (ts > 4 && tile_count(ts) < 32 * threads) ts = std::max(4, ts / 2);
     const int tiles_x = (w + ts - 1) / ts, tiles_y = (h + ts - 1) / ts;
     std::atomic<bool> abandoned{false};
 
@@ -96,8 +105,6 @@ bool render_samples(const RenderContext& ctx, const Camera& camera,
         if (progress) progress->update(taken);
     };
 
-    const int threads = options.threads > 0 ? options.threads
-                                            : tbb::this_task_arena::max_concurrency();
     tbb::task_arena arena(threads);
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y),
