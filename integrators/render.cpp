@@ -105,8 +105,7 @@ bool render_samples(const RenderContext& ctx, const Camera& camera,
         if (progress) progress->update(taken);
     };
 
-    tbb::task_arena arena(threads);
-    arena.execute([&] {
+    auto run = [&] {
         tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y),
                           [&](const tbb::blocked_range<int>& r) {
                               for (int t = r.begin(); t != r.end(); ++t) {
@@ -116,7 +115,15 @@ bool render_samples(const RenderContext& ctx, const Camera& camera,
                                       render_tile(t, std::false_type{});
                               }
                           });
-    });
+    };
+    // render() runs all its passes in one arena of this size: reuse it rather than
+    // make a new one per pass, whose workers would have to join it again each time.
+    if (tbb::this_task_arena::max_concurrency() == threads) {
+        run();
+    } else {
+        tbb::task_arena arena(threads);
+        arena.execute(run);
+    }
     return !abandoned;
 }
 
@@ -177,6 +184,34 @@ void render_adaptive(const RenderContext& ctx, const Camera& camera,
     s.active_pixels = n_active;
 }
 
+// The passes of render(): adaptive ones with a target error, else growing ones.
+void render_passes(const RenderContext& ctx, const Camera& camera, const Integrator& integrator,
+                   const RenderOptions& options, Film& film, ProgressReporter& progress,
+                   RenderStats& s, uint64_t rays_before, const std::function<double()>& elapsed) {
+    if (options.target_error > 0) {
+        render_adaptive(ctx, camera, integrator, options, film, progress, s, rays_before,
+                        elapsed);
+        return;
+    }
+    for (;;) {
+        const uint32_t n = next_pass_samples(s.spp, options.spp, elapsed(), options.time_limit);
+        if (n == 0) break;
+        if (options.interrupts && options.interrupts->load() >= 1) {
+            s.interrupted = true;
+            break;
+        }
+        if (!render_samples(ctx, camera, integrator, options, film, s.spp, s.spp + n,
+                            &progress)) {
+            s.interrupted = s.aborted = true;
+            break;
+        }
+        s.spp += n;
+        ++s.passes;
+        // Between passes no thread traces, so summing the per-thread counters is safe.
+        progress.set_rays(ctx.accel.rays_traced() - rays_before);
+    }
+}
+
 }  // namespace
 
 Film render(const RenderContext& ctx, const Camera& camera, const Integrator& integrator,
@@ -199,26 +234,11 @@ Film render(const RenderContext& ctx, const Camera& camera, const Integrator& in
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
     RenderStats s;
-    if (options.target_error > 0)
-        render_adaptive(ctx, camera, integrator, options, film, progress, s, rays_before,
-                        elapsed);
-    while (options.target_error <= 0) {
-        const uint32_t n = next_pass_samples(s.spp, options.spp, elapsed(), options.time_limit);
-        if (n == 0) break;
-        if (options.interrupts && options.interrupts->load() >= 1) {
-            s.interrupted = true;
-            break;
-        }
-        if (!render_samples(ctx, camera, integrator, options, film, s.spp, s.spp + n,
-                            &progress)) {
-            s.interrupted = s.aborted = true;
-            break;
-        }
-        s.spp += n;
-        ++s.passes;
-        // Between passes no thread traces, so summing the per-thread counters is safe.
-        progress.set_rays(accel.rays_traced() - rays_before);
-    }
+    // One arena for every pass (render_samples runs in it when the size matches).
+    tbb::task_arena arena(options.threads > 0 ? options.threads
+                                              : tbb::this_task_arena::max_concurrency());
+    arena.execute([&] { render_passes(ctx, camera, integrator, options, film, progress, s,
+                                      rays_before, elapsed); });
     if (options.interrupts && options.interrupts->load() >= 1 && s.spp < options.spp)
         s.interrupted = true;
     progress.done();
