@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <set>
@@ -197,7 +198,16 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
                      path.c_str(), output.c_str(), preview.empty() ? "" : " + ",
                      preview.c_str(), stats.interrupted ? " (partial)" : "", setup->width,
                      setup->height, stats.spp,
-                     stats.spp < o.spp ? (" of " + std::to_string(o.spp)).c_str() : "",
+                     o.target_error > 0
+                         ? (" at most, mean " +
+                            std::to_string(int(std::lround(double(stats.camera_samples) /
+                                                           (double(setup->width) *
+                                                            setup->height)))) +
+                            " (adaptive), " + std::to_string(stats.active_pixels) +
+                            " pixels unconverged")
+                               .c_str()
+                     : stats.spp < o.spp ? (" of " + std::to_string(o.spp)).c_str()
+                                         : "",
                      o.integrator.c_str(), cam_desc.name.c_str(),
                      format_duration(setup->load_seconds).c_str(),
                      format_duration(setup->build_seconds).c_str(), as.object_scenes,
