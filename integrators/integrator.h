@@ -42,6 +42,15 @@ struct IntegratorOptions {
     LightStrategy strategy = LightStrategy::Mis;
     int light_samples = 1;     // direct: shadow rays per shading point
     int bsdf_samples = 1;      // direct: BSDF samples per shading point
+    // path, firefly control (off at 0; biased when on). Each contribution's largest
+    // component is clamped to these, as Cycles' sample_clamp_direct / _indirect: direct
+    // light has at most one bounce between camera and emitter, indirect more.
+    float clamp_direct = 0, clamp_indirect = 0;
+    // path: path regularization (Cycles' "filter glossy", a roughening in the spirit of
+    // Kaplanyan & Dachsbacher 2013): after the first non-specular bounce, glTF materials
+    // are shaded with at least this roughness, so near-specular lobes met later (the
+    // caustic paths diffuse -> mirror -> light) become glossy and NEE can find the light.
+    float regularize_roughness = 0;
 };
 
 class Integrator {

@@ -4,6 +4,18 @@
 
 namespace penumbra {
 
+namespace {
+
+// Cycles' clamp: the contribution scaled so its largest component is at most limit (0:
+// off). Scaling, never raising, keeps the hue of what is clamped.
+Spectrum clamped(Spectrum c, float limit) {
+    if (limit <= 0) return c;
+    const float m = max_component(c);
+    return m > limit ? c * (limit / m) : c;
+}
+
+}  // namespace
+
 Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
                             Sampler& sampler) const {
     const LightStrategy strategy = m_options.strategy;
@@ -19,6 +31,11 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
     int depth = 0;
     int passes = 0;  // surfaces skipped for alpha; bounded so a stack of holes ends
     PathMedia media;  // camera rays start outside all media
+    // Light reaching the camera through at most one bounce is direct (for the clamps).
+    auto clamp_for = [&](int bounces) {
+        return bounces <= 1 ? m_options.clamp_direct : m_options.clamp_indirect;
+    };
+    MaterialOptions materials = ctx.materials;
     for (;;) {
         const std::optional<Hit> hit = ctx.accel.intersect(ray);
         // The medium the segment lies in absorbs along it up to the hit. A ray that
@@ -37,7 +54,7 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
                 const float w = unweighted ? 1.0f
                                            : emission_weight(ctx, env, prev_p, prev_n, nullptr,
                                                              wi, ray.time, bsdf_pdf, strategy);
-                L += beta * env->Le(wi) * w;
+                L += clamped(beta * env->Le(wi) * w, clamp_for(depth));
             }
             break;
         }
@@ -45,7 +62,7 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         const Vec3 wo_world = normalize(-ray.d);
         dispersion_channel(ctx, media, sp.material, sampler, beta);
         const bool front = dot(wo_world, sp.ng) >= 0;  // as shade() decides it
-        const ShadingData sd = shade(ctx.scene, sp, wo_world, ctx.materials,
+        const ShadingData sd = shade(ctx.scene, sp, wo_world, materials,
                                      path_volume(ctx, media, sp.material, front));
 
         if (pass_through(sp, sd, sampler, ray)) {
@@ -60,14 +77,16 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
                 w = emission_weight(ctx, light, prev_p, prev_n, &sp.p, wo_world * -1.0f,
                                     ray.time, bsdf_pdf, strategy);
             }
-            L += beta * sd.emission * w;
+            L += clamped(beta * sd.emission * w, clamp_for(depth));
         }
         if (depth >= m_options.max_depth) break;
 
         const Bsdf& bsdf = *sd.bsdf.get();
         const Vec3 wo = sd.frame.to_local(wo_world);
-        L += beta * sample_one_light(ctx, sp, sd, wo, ray.time, sampler, strategy, 1, 1,
-                                     side_media(ctx, media.stack, sp.material, sd.front_face));
+        L += clamped(beta * sample_one_light(ctx, sp, sd, wo, ray.time, sampler, strategy, 1, 1,
+                                             side_media(ctx, media.stack, sp.material,
+                                                        sd.front_face)),
+                     clamp_for(depth + 1));
 
         const std::optional<BsdfSample> bs =
             bsdf.sample(wo, sampler.get_1d(), sampler.get_2d(), Transport::Radiance);
@@ -83,6 +102,8 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         if (bs->wi.z < 0) cross_surface(ctx, media.stack, sp.material, sd.front_face);
         eta_scale *= bs->eta * bs->eta;
         specular_bounce = bs->is_specular();
+        if (!specular_bounce && m_options.regularize_roughness > 0)
+            materials.min_roughness = m_options.regularize_roughness;
         bsdf_pdf = bs->pdf;
         prev_p = sp.p;
         prev_n = sd.ng;

@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 
 #include "core/error.h"
 #include "core/sampling/hash.h"
+#include "integrators/adaptive_sampling.h"
 #include "integrators/first_hit.h"
 
 namespace penumbra {
@@ -24,16 +26,36 @@ bool abandon(const RenderOptions& o) {
 
 bool render_samples(const RenderContext& ctx, const Camera& camera,
                     const Integrator& integrator, const RenderOptions& options, Film& film,
-                    uint32_t first, uint32_t last, ProgressReporter* progress) {
+                    uint32_t first, uint32_t last, ProgressReporter* progress,
+                    const std::vector<uint8_t>* active) {
     const int w = camera.width(), h = camera.height();
     CHECK(film.width() == w && film.height() == h);
+    CHECK(!active || active->size() == size_t(w) * h);
     const std::unique_ptr<Filter> filter = make_filter(options.filter);
     // Built for the whole budget: stratified and Sobol index their strata by the sample
-    // index within [0, spp), whatever the pass.
-    const std::unique_ptr<Sampler> prototype =
-        make_sampler(options.sampler, std::max(options.spp, last), options.seed);
+    // index within [0, spp), whatever the pass. With the error estimate, even and odd
+    // sample indices are two independently seeded sample streams of half the budget
+    // each (sample 2i is stream 0's i-th, 2i+1 stream 1's): the difference of two
+    // independent randomised estimates is a valid error estimate for any sampler, where
+    // the spread of one QMC pixel's samples is not (Owen 2013, ch. 17, "replicates").
+    const bool halves = film.aovs().has(Aov::Error);
+    const uint32_t budget = std::max(options.spp, last);
+    std::unique_ptr<Sampler> prototypes[2] = {
+        make_sampler(options.sampler, halves ? (budget + 1) / 2 : budget, options.seed),
+        halves ? make_sampler(options.sampler, (budget + 1) / 2,
+                              hash_values(options.seed, 0x68616c76657331ull))
+               : nullptr};
 
-    const int ts = std::max(1, options.tile_size);
+    const int threads = options.threads > 0 ? options.threads
+                                            : tbb::this_task_arena::max_concurrency();
+    // Work items: tiles, split further (down to 4x4) until there are at least 32 per
+    // thread, so a small image or a pass of few samples (the first passes render 1, 1,
+    // 2 spp) still keeps every thread busy to the end of the pass; TBB steals the
+    // rest. The image does not depend on it: each pixel's samples stay in index order
+    // in one work item.
+    int ts = std::max(1, options.tile_size);
+    auto tile_count = [&](int size) { return ((w + size - 1) / size) * ((h + size - 1) / size); };
+    while (ts > 4 && tile_count(ts) < 32 * threads) ts = std::max(4, ts / 2);
     const int tiles_x = (w + ts - 1) / ts, tiles_y = (h + ts - 1) / ts;
     std::atomic<bool> abandoned{false};
 
@@ -41,45 +63,49 @@ bool render_samples(const RenderContext& ctx, const Camera& camera,
     // no AOV work per sample.
     const bool first_hit = film.aovs().needs_first_hit();
     auto render_tile = [&](int tile, auto with_aovs) {
-        std::unique_ptr<Sampler> sampler = prototype->clone();
+        std::unique_ptr<Sampler> samplers[2] = {prototypes[0]->clone(),
+                                                halves ? prototypes[1]->clone() : nullptr};
         const int x0 = (tile % tiles_x) * ts, y0 = (tile / tiles_x) * ts;
         const int x1 = std::min(x0 + ts, w), y1 = std::min(y0 + ts, h);
+        uint64_t taken = 0;
         for (int y = y0; y < y1; ++y) {
             // A second Ctrl-C should not wait for the pass: check once per row.
             if (abandon(options)) {
                 abandoned = true;
                 return;
             }
-            for (int x = x0; x < x1; ++x)
+            for (int x = x0; x < x1; ++x) {
+                if (active && !(*active)[size_t(y) * w + x]) continue;
+                taken += last - first;
                 for (uint32_t s = first; s < last; ++s) {
-                    sampler->start_pixel_sample({x, y}, s);
+                    Sampler& sampler = halves ? *samplers[s & 1] : *samplers[0];
+                    sampler.start_pixel_sample({x, y}, halves ? s >> 1 : s);
                     // Filter importance sampling: the offset follows the filter, so the
                     // sample only contributes to this pixel, with weight f/pdf.
-                    const FilterSample fs = filter->sample(sampler->get_pixel_2d());
+                    const FilterSample fs = filter->sample(sampler.get_pixel_2d());
                     CameraSample cs;
                     cs.film = {x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
-                    cs.lens = sampler->get_2d();
-                    cs.time = sampler->get_1d();
+                    cs.lens = sampler.get_2d();
+                    cs.time = sampler.get_1d();
                     const Ray ray = camera.generate_ray(cs);
-                    const Spectrum L = integrator.Li(ray, ctx, *sampler);
+                    const Spectrum L = integrator.Li(ray, ctx, sampler);
                     if constexpr (decltype(with_aovs)::value) {
-                        const AovRecord aov =
+                        AovRecord aov =
                             first_hit ? first_hit_aovs(ray, ctx,
                                                        hash_values(options.seed, x, y, s))
                                       : AovRecord{};
+                        aov.odd = (s & 1) != 0;
                         film.add_sample(x, y, L, fs.weight, aov);
                     } else {
                         film.add_sample(x, y, L, fs.weight);
                     }
                 }
+            }
         }
-        if (progress) progress->update(uint64_t(x1 - x0) * (y1 - y0) * (last - first));
+        if (progress) progress->update(taken);
     };
 
-    const int threads = options.threads > 0 ? options.threads
-                                            : tbb::this_task_arena::max_concurrency();
-    tbb::task_arena arena(threads);
-    arena.execute([&] {
+    auto run = [&] {
         tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y),
                           [&](const tbb::blocked_range<int>& r) {
                               for (int t = r.begin(); t != r.end(); ++t) {
@@ -89,7 +115,15 @@ bool render_samples(const RenderContext& ctx, const Camera& camera,
                                       render_tile(t, std::false_type{});
                               }
                           });
-    });
+    };
+    // render() runs all its passes in one arena of this size: reuse it rather than
+    // make a new one per pass, whose workers would have to join it again each time.
+    if (tbb::this_task_arena::max_concurrency() == threads) {
+        run();
+    } else {
+        tbb::task_arena arena(threads);
+        arena.execute(run);
+    }
     return !abandoned;
 }
 
@@ -110,23 +144,58 @@ uint32_t next_pass_samples(uint32_t done, uint32_t budget, double elapsed, doubl
     return n;
 }
 
-Film render(const RenderContext& ctx, const Camera& camera, const Integrator& integrator,
-            const RenderOptions& options, RenderStats* stats) {
-    const Accel& accel = ctx.accel;
-    const int w = camera.width(), h = camera.height();
-    Film film(w, h, options.aovs);
-    const uint64_t rays_before = accel.rays_traced();
-    ProgressReporter progress(options.label, uint64_t(w) * h * options.spp, "samples",
-                              options.progress, options.batch);
-    if (options.time_limit > 0) progress.set_time_limit(options.time_limit);
+namespace {
 
-    const auto start = std::chrono::steady_clock::now();
-    auto elapsed = [&] {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    };
-    RenderStats s;
-    while (const uint32_t n = next_pass_samples(s.spp, options.spp, elapsed(),
-                                                options.time_limit)) {
+// Adaptive passes: min_spp samples, then adaptive_step more at a time, to the pixels
+// still active after each; every pass is even and starts at an even index.
+void render_adaptive(const RenderContext& ctx, const Camera& camera,
+                     const Integrator& integrator, const RenderOptions& options, Film& film,
+                     ProgressReporter& progress, RenderStats& s, uint64_t rays_before,
+                     const std::function<double()>& elapsed) {
+    const size_t pixels = size_t(film.width()) * film.height();
+    std::vector<uint8_t> active(pixels, 1);
+    size_t n_active = pixels;
+    const uint32_t min_spp = std::min(
+        options.spp, options.min_spp ? (options.min_spp + 1) & ~1u
+                                     : adaptive_min_spp(options.target_error));
+    while (n_active > 0 && s.spp < options.spp) {
+        const uint32_t n =
+            std::min(options.spp - s.spp, s.spp == 0 ? min_spp : adaptive_step(s.spp));
+        if (options.interrupts && options.interrupts->load() >= 1) {
+            s.interrupted = true;
+            break;
+        }
+        if (options.time_limit > 0 && s.spp > 0) {
+            const double per_sample = elapsed() / double(s.camera_samples);
+            if (elapsed() + per_sample * double(n) * double(n_active) > options.time_limit)
+                break;
+        }
+        if (!render_samples(ctx, camera, integrator, options, film, s.spp, s.spp + n,
+                            &progress, &active)) {
+            s.interrupted = s.aborted = true;
+            break;
+        }
+        s.camera_samples += uint64_t(n) * n_active;
+        s.spp += n;
+        ++s.passes;
+        progress.set_rays(ctx.accel.rays_traced() - rays_before);
+        if (s.spp >= min_spp) n_active = update_active_pixels(film, options.target_error, active);
+    }
+    s.active_pixels = n_active;
+}
+
+// The passes of render(): adaptive ones with a target error, else growing ones.
+void render_passes(const RenderContext& ctx, const Camera& camera, const Integrator& integrator,
+                   const RenderOptions& options, Film& film, ProgressReporter& progress,
+                   RenderStats& s, uint64_t rays_before, const std::function<double()>& elapsed) {
+    if (options.target_error > 0) {
+        render_adaptive(ctx, camera, integrator, options, film, progress, s, rays_before,
+                        elapsed);
+        return;
+    }
+    for (;;) {
+        const uint32_t n = next_pass_samples(s.spp, options.spp, elapsed(), options.time_limit);
+        if (n == 0) break;
         if (options.interrupts && options.interrupts->load() >= 1) {
             s.interrupted = true;
             break;
@@ -139,15 +208,44 @@ Film render(const RenderContext& ctx, const Camera& camera, const Integrator& in
         s.spp += n;
         ++s.passes;
         // Between passes no thread traces, so summing the per-thread counters is safe.
-        progress.set_rays(accel.rays_traced() - rays_before);
+        progress.set_rays(ctx.accel.rays_traced() - rays_before);
     }
+}
+
+}  // namespace
+
+Film render(const RenderContext& ctx, const Camera& camera, const Integrator& integrator,
+            const RenderOptions& options, RenderStats* stats) {
+    const Accel& accel = ctx.accel;
+    const int w = camera.width(), h = camera.height();
+    AovSet aovs = options.aovs;
+    if (options.target_error > 0) {
+        aovs.add(Aov::Error);
+        aovs.add(Aov::Samples);
+    }
+    Film film(w, h, aovs);
+    const uint64_t rays_before = accel.rays_traced();
+    ProgressReporter progress(options.label, uint64_t(w) * h * options.spp, "samples",
+                              options.progress, options.batch);
+    if (options.time_limit > 0) progress.set_time_limit(options.time_limit);
+
+    const auto start = std::chrono::steady_clock::now();
+    auto elapsed = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    RenderStats s;
+    // One arena for every pass (render_samples runs in it when the size matches).
+    tbb::task_arena arena(options.threads > 0 ? options.threads
+                                              : tbb::this_task_arena::max_concurrency());
+    arena.execute([&] { render_passes(ctx, camera, integrator, options, film, progress, s,
+                                      rays_before, elapsed); });
     if (options.interrupts && options.interrupts->load() >= 1 && s.spp < options.spp)
         s.interrupted = true;
     progress.done();
 
     s.seconds = elapsed();
     s.rays = accel.rays_traced() - rays_before;
-    s.camera_samples = uint64_t(w) * h * s.spp;
+    if (options.target_error <= 0) s.camera_samples = uint64_t(w) * h * s.spp;
     s.nonfinite_samples = film.nonfinite_samples();
     if (stats) *stats = s;
     return film;

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/camera/camera.h"
 #include "core/film/film.h"
@@ -40,25 +41,34 @@ struct RenderOptions {
     // AOVs to accumulate besides the beauty (the film render() returns has them). The
     // first-hit ones cost one more camera ray per sample; rays traced include it.
     AovSet aovs;
+    // Adaptive sampling (integrators/adaptive_sampling.h): > 0 stops each pixel once its
+    // estimated relative standard error is below this, after at least min_spp samples
+    // (0: adaptive_min_spp's rule) and at most spp. Adds the error and samples AOVs.
+    double target_error = 0;
+    uint32_t min_spp = 0;
 };
 
 struct RenderStats {
     double seconds = 0;
     uint64_t rays = 0;
-    uint64_t camera_samples = 0;
+    uint64_t camera_samples = 0;  // over all pixels (fewer than w h spp when adaptive)
     uint64_t nonfinite_samples = 0;
-    uint32_t spp = 0;          // samples per pixel actually rendered
+    uint32_t spp = 0;          // samples per pixel actually rendered (the most, if adaptive)
+    uint64_t active_pixels = 0;  // adaptive: pixels not converged when the render ended
     int passes = 0;
     bool interrupted = false;  // stopped by a user interrupt before options.spp
     bool aborted = false;      // second interrupt: the last pass is incomplete
 };
 
 // Adds sample indices [first, last) of every pixel to film (the camera's size), in
-// index order per pixel: rendering [0,k) then [k,n) equals [0,n) bit for bit. Returns
-// false when a second interrupt abandoned the pass; the film is then inconsistent.
+// index order per pixel: rendering [0,k) then [k,n) equals [0,n) bit for bit. With
+// `active` (one flag per pixel, row-major), only the flagged pixels take samples. A film
+// with the error AOV draws odd sample indices from a second, independent sample stream.
+// Returns false when a second interrupt abandoned the pass; the film is then inconsistent.
 bool render_samples(const RenderContext& ctx, const Camera& camera,
                     const Integrator& integrator, const RenderOptions& options, Film& film,
-                    uint32_t first, uint32_t last, ProgressReporter* progress = nullptr);
+                    uint32_t first, uint32_t last, ProgressReporter* progress = nullptr,
+                    const std::vector<uint8_t>* active = nullptr);
 
 // How many samples per pixel the next pass should render when `done` took `elapsed`
 // seconds: as many again as are done (so passes cost little), but no pass predicted to
@@ -70,6 +80,9 @@ uint32_t next_pass_samples(uint32_t done, uint32_t budget, double elapsed, doubl
 // Renders options.spp samples per pixel in passes (1, 1, 2, 4, ... samples, shortened
 // to keep each pass to a few seconds and within the time limit) so that an interrupt
 // or the time limit stops between passes. stats->spp says how many were rendered.
+// With a target error the passes are fixed instead (adaptive_min_spp, then
+// adaptive_step), so which pixels stop depends on the film alone; a time limit or an
+// interrupt then ends the render after a whole pass.
 Film render(const RenderContext& ctx, const Camera& camera, const Integrator& integrator,
             const RenderOptions& options, RenderStats* stats = nullptr);
 

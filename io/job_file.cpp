@@ -31,7 +31,8 @@ public:
             "frame",  "spp",    "seed",       "time",     "time_limit", "fps",
             "shutter", "shutter_open", "shutter_close", "ocio_config", "working_space",
             "output_colorspace", "display", "view", "look", "aov", "half", "compression",
-            "light_units", "default_light", "exposure", "strict", "max_texture_pixels"};
+            "light_units", "default_light", "exposure", "strict", "max_texture_pixels",
+            "target_error", "adaptive_min_spp", "clamp_direct", "clamp_indirect", "regularize"};
         for (const auto& [key, value] : m_object.items()) {
             bool known = false;
             for (const char* k : kKeys) known = known || key == k;
@@ -102,6 +103,13 @@ public:
             if (!m_object["strict"].is_boolean()) fail("strict", "expected true or false");
             s.strict = m_object["strict"].get<bool>();
         }
+        number("target_error", s.target_error, true);
+        integer("adaptive_min_spp", s.adaptive_min_spp, 0, 1 << 24);
+        number("clamp_direct", s.clamp_direct, true);
+        number("clamp_indirect", s.clamp_indirect, true);
+        number("regularize", s.regularize, false);
+        if (s.regularize && !(*s.regularize >= 0 && *s.regularize <= 1))
+            fail("regularize", "expected a roughness in [0, 1]");
         if (m_object.contains("max_texture_pixels")) {
             const json& v = m_object["max_texture_pixels"];
             if (!v.is_number_unsigned() || v.get<uint64_t>() < 1)

@@ -32,6 +32,10 @@ struct JobSettings {
     // As --strict and --max-texture-pixels.
     std::optional<bool> strict;
     std::optional<uint64_t> max_texture_pixels;
+    // Adaptive sampling and firefly control, as --target-error, --adaptive-min-spp,
+    // --clamp-direct, --clamp-indirect and --regularize.
+    std::optional<double> target_error, clamp_direct, clamp_indirect, regularize;
+    std::optional<int> adaptive_min_spp;
 };
 
 struct JobEntry {

@@ -31,6 +31,8 @@ const std::vector<AovLayout>& aov_layouts() {
         {Aov::Variance, "Variance", {"R", "G", "B"}, false, false},
         // Half holds integers exactly only up to 2048.
         {Aov::Samples, "Samples", {"X"}, false, true},
+        // Relative, so an exposure leaves it as it is.
+        {Aov::Error, "Error", {"X"}, false, false},
     };
     return list;
 }

@@ -37,7 +37,8 @@ RenderFilesResult write_render(const RenderFiles& files, const Film& film,
 
 // The EXR layers of film's AOVs, named as Blender's compositor and Nuke expect a
 // "pass.channel" pair: Albedo.{R,G,B}, Normal.{X,Y,Z}, Depth.Z, Position.{X,Y,Z},
-// Variance.{R,G,B}, Samples.X. Albedo is converted to the output space (a colour);
+// Variance.{R,G,B}, Samples.X, Error.X (relative standard error, Film::relative_error).
+// Albedo is converted to the output space (a colour);
 // variance stays in the working space (a matrix does not map variances of correlated
 // channels). Depth, position and samples stay 32-bit under --half.
 struct AovLayers {

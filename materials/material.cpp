@@ -139,7 +139,7 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
         metallic *= mr.z;
     }
     metallic = std::clamp(metallic, 0.0f, 1.0f);
-    roughness = std::clamp(roughness, 0.0f, 1.0f);
+    roughness = std::clamp(std::max(roughness, options.min_roughness), 0.0f, 1.0f);
 
     // Single-sided emitters (doubleSided false) emit from the glTF front face only.
     if (emits_towards(m, front_normal(sp), wo))
@@ -243,7 +243,7 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
         float coat_roughness = m.clearcoat_roughness;
         if (m.clearcoat_roughness_texture.valid())
             coat_roughness *= sample_texture(scene, m.clearcoat_roughness_texture, sp).y;
-        coat_roughness = std::clamp(coat_roughness, 0.0f, 1.0f);
+        coat_roughness = std::clamp(std::max(coat_roughness, options.min_roughness), 0.0f, 1.0f);
         // The coat has its own normal map; without one it follows the interpolated
         // normal, not the base's normal map (the clearcoat spec's clearcoatNormalTexture).
         Vec3 nc = sd.frame.to_local(

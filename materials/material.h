@@ -50,6 +50,9 @@ struct MaterialOptions {
     MicrofacetType gltf_distribution = MicrofacetType::Ggx;
     // How the diffuse base of dielectrics layers under the specular lobe (--gltf-layering).
     GltfLayering gltf_layering = GltfLayering::AlbedoScaled;
+    // The least roughness of the specular and clearcoat lobes: the path tracer's
+    // regularization raises it after a rough bounce (IntegratorOptions). 0: as authored.
+    float min_roughness = 0;
 };
 
 // What a path knows about the volumes around a hit (integrators/path_media.h).

@@ -69,6 +69,11 @@ void apply(const JobSettings& s, RenderCommandOptions& o) {
     if (s.exposure) o.exposure = float(*s.exposure);
     if (s.strict) o.strict = *s.strict;
     if (s.max_texture_pixels) o.max_texture_pixels = *s.max_texture_pixels;
+    if (s.target_error) o.target_error = *s.target_error;
+    if (s.adaptive_min_spp) o.adaptive_min_spp = unsigned(*s.adaptive_min_spp);
+    if (s.clamp_direct) o.clamp_direct = float(*s.clamp_direct);
+    if (s.clamp_indirect) o.clamp_indirect = float(*s.clamp_indirect);
+    if (s.regularize) o.regularize = float(*s.regularize);
 }
 
 // Option values the command line checks with CLI11 but a job file can spell freely.

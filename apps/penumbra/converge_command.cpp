@@ -67,6 +67,10 @@ void add_converge_command(CLI::App& app, ConvergeOptions& o) {
                     "or cpu (CPU time of all threads, steadier on a busy machine)")
         ->capture_default_str()
         ->check(CLI::IsMember({"wall", "cpu"}));
+    cmd->add_flag("--bias-variance", o.bias_variance,
+                  "Split relMSE into the variance estimated from two independent halves of "
+                  "the samples and the rest (bias^2 and the reference's noise): shows what "
+                  "--clamp-indirect or --regularize trade");
     add_image_options(cmd, o.base);
     cmd->add_flag("-q,--quiet", o.base.quiet, "Only print errors and the summary");
 }
@@ -81,6 +85,9 @@ struct Config {
 struct Checkpoint {
     uint32_t spp = 0;
     double seconds = 0, cpu_seconds = 0, mse = 0, relmse = 0;
+    double variance = 0;      // --bias-variance: the halves' estimate, relative as relMSE
+    double mean_spp = 0;      // samples per pixel on average (below spp when adaptive)
+    double target_error = 0;  // adaptive configurations: the target of this render
     double time(const std::string& clock) const { return clock == "cpu" ? cpu_seconds : seconds; }
 };
 
@@ -129,6 +136,21 @@ Image render_image(const SceneSetup& s, const RenderOptions& ropt, RenderStats& 
     return render(s.context(), *s.camera, *s.integrator, ropt, &stats).resolve();
 }
 
+// Mean over pixels and R, G, B of the film's estimated variance / (r^2 + epsilon): the
+// variance part of its relMSE against r.
+double relative_variance(const Film& film, const Image& ref, double epsilon) {
+    double sum = 0;
+    for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x) {
+            const Spectrum v = film.estimated_variance(x, y);
+            for (int c = 0; c < 3; ++c) {
+                const double r = ref.at(x, y)[c];
+                sum += v[c] / (r * r + epsilon);
+            }
+        }
+    return sum / (3.0 * film.width() * film.height());
+}
+
 Image render_reference(const ConvergeOptions& o, const RenderCommandOptions& base) {
     RenderCommandOptions ro = base;
     ro.spp = o.reference_spp;
@@ -150,6 +172,8 @@ Image render_reference(const ConvergeOptions& o, const RenderCommandOptions& bas
     return ref;
 }
 
+std::string fmt(const char* format, double v);
+
 std::vector<Checkpoint> measure(const ConvergeOptions& o, const Config& c, const Image& ref) {
     const std::unique_ptr<SceneSetup> s = setup_scene(c.options, o.scene);
     if (s->width != ref.width || s->height != ref.height)
@@ -159,7 +183,19 @@ std::vector<Checkpoint> measure(const ConvergeOptions& o, const Config& c, const
     std::vector<RenderOptions> runs;
     RenderOptions ropt = render_options_for(c.options, c.name);
     ropt.progress = false;
-    if (o.times.empty()) {
+    if (o.bias_variance) ropt.aovs.add(Aov::Error);
+    if (ropt.target_error > 0) {
+        // Adaptive: the target halves in relMSE (E / sqrt 2) per checkpoint, ending at
+        // the configuration's, as many checkpoints as the spp sweep has; --max-spp caps.
+        ropt.spp = o.max_spp;
+        int count = 0;
+        for (uint64_t spp = o.min_spp; spp <= o.max_spp; spp *= 2) ++count;
+        const double last = ropt.target_error;
+        for (int k = count - 1; k >= 0; --k) {
+            ropt.target_error = last * std::pow(2.0, 0.5 * k);
+            runs.push_back(ropt);
+        }
+    } else if (o.times.empty()) {
         for (uint64_t spp = o.min_spp; spp <= o.max_spp; spp *= 2) {
             ropt.spp = static_cast<uint32_t>(spp);
             runs.push_back(ropt);
@@ -175,14 +211,19 @@ std::vector<Checkpoint> measure(const ConvergeOptions& o, const Config& c, const
     for (const RenderOptions& run : runs) {
         RenderStats stats;
         const double cpu0 = process_cpu_seconds();
-        const Image img = render_image(*s, run, stats);
+        const Film film = render(s->context(), *s->camera, *s->integrator, run, &stats);
+        const Image img = film.resolve();
         Checkpoint p{stats.spp, stats.seconds, process_cpu_seconds() - cpu0,
                      mean_squared_error(img, ref), relative_mse(img, ref, o.epsilon)};
+        if (o.bias_variance) p.variance = relative_variance(film, ref, o.epsilon);
+        p.mean_spp = double(stats.camera_samples) / (double(img.width) * img.height);
+        p.target_error = run.target_error;
         points.push_back(p);
         if (!c.options.quiet)
-            std::printf("%-14s %7u spp %8s (cpu %8s)  MSE %.4e  relMSE %.4e\n",
-                        c.name.c_str(), p.spp, format_duration(p.seconds).c_str(),
-                        format_duration(p.cpu_seconds).c_str(), p.mse, p.relmse);
+            std::printf("%-14s %7u spp (mean %7.1f) %8s (cpu %8s)  MSE %.4e  relMSE %.4e%s\n",
+                        c.name.c_str(), p.spp, p.mean_spp, format_duration(p.seconds).c_str(),
+                        format_duration(p.cpu_seconds).c_str(), p.mse, p.relmse,
+                        o.bias_variance ? fmt("  variance %.4e", p.variance).c_str() : "");
         std::fflush(stdout);
     }
     return points;
@@ -227,11 +268,26 @@ int run_converge_command(const ConvergeOptions& o) {
     if (o.reference.empty()) ref = render_reference(opts, opts.base);
 
     // mse_x_time and relmse_x_time: inverse efficiency, with the --clock time.
+    // mean_spp: below spp where adaptive sampling stopped pixels early; target_error: the
+    // adaptive target (0: none); variance and bias2 with --bias-variance.
     std::string csv =
-        "config,spp,seconds,cpu_seconds,mse,relmse,mse_x_time,relmse_x_time\n";
+        "config,spp,seconds,cpu_seconds,mse,relmse,mse_x_time,relmse_x_time,mean_spp,"
+        "target_error";
+    csv += o.bias_variance ? ",variance,bias2\n" : "\n";
     std::string table = row("config", "spp", o.clock + " s", "MSE", "relMSE", "MSE*s", "slope",
                             "time to relMSE " + fmt("%g", o.target_relmse));
     std::vector<PlotSeries> series;
+    // --bias-variance: the last checkpoint's relMSE split, one line per configuration.
+    std::string split = o.bias_variance ? "\nrelMSE = variance (from the two halves) + "
+                                          "bias^2 (and the reference's noise), last "
+                                          "checkpoint:\n"
+                                        : "";
+    auto fmt_row = [](const std::string& name, const Checkpoint& p) {
+        char line[256];
+        std::snprintf(line, sizeof line, "%-14s relMSE %.4e = variance %.4e + bias^2 %.4e\n",
+                      name.c_str(), p.relmse, p.variance, p.relmse - p.variance);
+        return std::string(line);
+    };
     for (const Config& c : configs) {
         const std::vector<Checkpoint> points = measure(opts, c, ref);
         PlotSeries plot{c.name, {}, {}};
@@ -240,10 +296,15 @@ int run_converge_command(const ConvergeOptions& o) {
             const double t = p.time(o.clock);
             csv += c.name + "," + std::to_string(p.spp) + fmt(",%.6g", p.seconds) +
                    fmt(",%.6g", p.cpu_seconds) + fmt(",%.6g", p.mse) + fmt(",%.6g", p.relmse) +
-                   fmt(",%.6g", p.mse * t) + fmt(",%.6g", p.relmse * t) + "\n";
+                   fmt(",%.6g", p.mse * t) + fmt(",%.6g", p.relmse * t) +
+                   fmt(",%.6g", p.mean_spp) + fmt(",%.6g", p.target_error) +
+                   (o.bias_variance
+                        ? fmt(",%.6g", p.variance) + fmt(",%.6g", p.relmse - p.variance)
+                        : std::string()) +
+                   "\n";
             plot.x.push_back(t);
             plot.y.push_back(p.relmse);
-            spp.push_back(p.spp);
+            spp.push_back(p.mean_spp);
             mse.push_back(p.mse);
         }
         const std::optional<double> slope = log_log_slope(spp, mse);
@@ -256,8 +317,11 @@ int run_converge_command(const ConvergeOptions& o) {
                      reach ? (reach->at_most ? "<= " : "") + fmt("%.3g s", reach->seconds) +
                                  (reach->extrapolated ? " (extrapolated)" : "")
                            : "not reached");
+        if (o.bias_variance)
+            split += fmt_row(c.name, last);
         series.push_back(std::move(plot));
     }
+    if (o.bias_variance) table += split;
     const std::string summary =
         "penumbra converge " + o.scene + ": " + std::to_string(ref.width) + "x" +
         std::to_string(ref.height) + ", reference " +

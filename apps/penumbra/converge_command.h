@@ -1,6 +1,8 @@
 // `penumbra converge`: speed against error. Renders a scene at doubling sample counts
 // (or time checkpoints) in one or more configurations, measures each image against a
-// reference, and writes convergence.csv, a log-log convergence.svg and summary.txt.
+// reference, and writes convergence.csv, a log-log convergence.svg and summary.txt. A
+// configuration with --target-error sweeps the target instead of the spp, so the time to
+// an error compares adaptive sampling with uniform sampling.
 #pragma once
 
 #include <string>
@@ -24,6 +26,9 @@ struct ConvergeOptions {
     double target_relmse = 1e-2;
     double epsilon = 1e-2;        // relMSE = mean((x - r)^2 / (r^2 + epsilon))
     std::string clock = "wall";   // time for plot and efficiency: wall | cpu
+    // Split each relMSE into the variance the image's two halves estimate and the rest
+    // (bias^2, plus the reference's own noise): every render then takes the error AOV.
+    bool bias_variance = false;
     RenderCommandOptions base;    // the image options every configuration starts from
 };
 

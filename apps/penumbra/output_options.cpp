@@ -27,7 +27,9 @@ void add_output_options(CLI::App* cmd, RenderCommandOptions& o) {
     cmd->add_option("--look", o.color.look, "OCIO look(s) applied to the preview");
     cmd->add_option("--aov", o.aovs,
                     "Extra EXR layers, comma-separated: albedo, normal, depth, position, "
-                    "variance, samples (or all)")
+                    "variance, samples (or all), and error (relative standard error from two "
+                    "independently seeded halves of the samples; it changes the noise, so "
+                    "'all' leaves it out)")
         ->check([](const std::string& list) {
             try {
                 parse_aovs(list);

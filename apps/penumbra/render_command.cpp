@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <set>
@@ -9,6 +10,7 @@
 #include "apps/penumbra/batch.h"
 #include "apps/penumbra/interrupt.h"
 #include "apps/penumbra/output_options.h"
+#include "apps/penumbra/sampling_options.h"
 #include "apps/penumbra/scene_setup.h"
 #include "apps/penumbra/timeline_options.h"
 #include "core/error.h"
@@ -157,6 +159,14 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
         metadata.push_back({"penumbra:frame", std::to_string(*o.timeline.frame)});
     if (o.time_limit > 0)
         metadata.push_back({"penumbra:time_limit", std::to_string(o.time_limit)});
+    for (auto& field : sampling_metadata(o)) metadata.push_back(std::move(field));
+    if (o.target_error > 0) {
+        // What the adaptive render did: mean samples per pixel, pixels left unconverged.
+        metadata.push_back({"penumbra:mean_spp",
+                            std::to_string(double(stats.camera_samples) /
+                                           (double(setup->width) * setup->height))});
+        metadata.push_back({"penumbra:unconverged_pixels", std::to_string(stats.active_pixels)});
+    }
     // Timing differs from run to run, so it is opt-in: by default the same command
     // writes a bitwise identical file (docs/conventions.md).
     if (o.timing_metadata) {
@@ -188,7 +198,16 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
                      path.c_str(), output.c_str(), preview.empty() ? "" : " + ",
                      preview.c_str(), stats.interrupted ? " (partial)" : "", setup->width,
                      setup->height, stats.spp,
-                     stats.spp < o.spp ? (" of " + std::to_string(o.spp)).c_str() : "",
+                     o.target_error > 0
+                         ? (" at most, mean " +
+                            std::to_string(int(std::lround(double(stats.camera_samples) /
+                                                           (double(setup->width) *
+                                                            setup->height)))) +
+                            " (adaptive), " + std::to_string(stats.active_pixels) +
+                            " pixels unconverged")
+                               .c_str()
+                     : stats.spp < o.spp ? (" of " + std::to_string(o.spp)).c_str()
+                                         : "",
                      o.integrator.c_str(), cam_desc.name.c_str(),
                      format_duration(setup->load_seconds).c_str(),
                      format_duration(setup->build_seconds).c_str(), as.object_scenes,

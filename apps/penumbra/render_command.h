@@ -64,6 +64,10 @@ struct RenderCommandOptions {
     std::string compression = "zip";
     std::string reference;            // EXR to measure MSE and relMSE against
     bool timing_metadata = false;     // render time in the header (not reproducible)
+    // Adaptive sampling and firefly control (sampling_options.cpp); 0: off.
+    double target_error = 0;
+    unsigned adaptive_min_spp = 0;
+    float clamp_direct = 0, clamp_indirect = 0, regularize = 0;
 };
 
 void add_render_command(CLI::App& app, RenderCommandOptions& options);

@@ -1,5 +1,7 @@
 #include "apps/penumbra/scene_setup.h"
 
+#include "apps/penumbra/sampling_options.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -133,6 +135,7 @@ void add_image_options(CLI::App* cmd, RenderCommandOptions& o) {
                     "Refuse (as undecodable) texture images whose header claims more pixels")
         ->capture_default_str()
         ->check(CLI::Range(uint64_t(1), uint64_t(1) << 40));
+    add_sampling_options(cmd, o);
 }
 
 namespace {
@@ -282,6 +285,9 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     iopt.strategy = parse_light_strategy(o.strategy);
     iopt.light_samples = o.light_samples;
     iopt.bsdf_samples = o.bsdf_samples;
+    iopt.clamp_direct = o.clamp_direct;
+    iopt.clamp_indirect = o.clamp_indirect;
+    iopt.regularize_roughness = o.regularize;
     s->integrator = make_integrator(o.integrator, iopt);
     s->camera = make_camera(s->camera_desc, s->width, s->height);
     s->materials.gltf_distribution =
@@ -303,6 +309,8 @@ RenderOptions render_options_for(const RenderCommandOptions& o, const std::strin
     r.time = resolve_shutter(o.timeline).open;
     r.time_limit = o.time_limit;
     r.aovs = parse_aovs(o.aovs);
+    r.target_error = o.target_error;
+    r.min_spp = o.adaptive_min_spp;
     return r;
 }
 

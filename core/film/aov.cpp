@@ -6,7 +6,8 @@ namespace penumbra {
 
 const std::vector<std::string>& aov_names() {
     static const std::vector<std::string> names = {"albedo",   "normal",   "depth",
-                                                   "position", "variance", "samples"};
+                                                   "position", "variance", "samples",
+                                                   "error"};
     return names;
 }
 
@@ -22,7 +23,8 @@ AovSet parse_aovs(const std::string& list) {
         start = end + 1;
         if (name.empty()) continue;
         if (name == "all") {
-            for (size_t i = 0; i < aov_names().size(); ++i) set.add(Aov(1u << i));
+            for (size_t i = 0; i < aov_names().size(); ++i)
+                if (Aov(1u << i) != Aov::Error) set.add(Aov(1u << i));
             continue;
         }
         bool found = false;

@@ -19,6 +19,10 @@ enum class Aov : uint32_t {
     Position = 8,   // world position of the first hit
     Variance = 16,  // variance of the pixel's beauty estimate (of the mean), per channel
     Samples = 32,   // camera samples taken in the pixel
+    // Relative standard error of the pixel's beauty, from two independently seeded halves
+    // of its samples (core/film/error_estimate.h). Not a pure observer: asking for it
+    // draws odd sample indices from a second sample stream, so it is not part of "all".
+    Error = 64,
 };
 
 class AovSet {
@@ -40,8 +44,8 @@ private:
     uint32_t m_bits = 0;
 };
 
-// "albedo,normal,depth,position,variance,samples" (any subset, any order; "all" for
-// every one). Throws std::invalid_argument naming an unknown entry.
+// "albedo,normal,depth,position,variance,samples,error" (any subset, any order; "all"
+// for every one but error, which changes the sample streams). Throws std::invalid_argument naming an unknown entry.
 AovSet parse_aovs(const std::string& list);
 // The names parse_aovs accepts, in Aov order.
 const std::vector<std::string>& aov_names();
@@ -54,6 +58,8 @@ struct AovRecord {
     Vec3 normal;
     Vec3 position;
     float depth = 0;
+    // The sample's index is odd: it belongs to the second half of the error estimate.
+    bool odd = false;
 };
 
 }  // namespace penumbra

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "core/convergence.h"
 
 namespace penumbra {
 
@@ -19,6 +22,10 @@ Film::Film(int width, int height, AovSet aovs)
         m_aov.weight2.assign(n, 0.0);
     }
     if (aovs.has(Aov::Samples)) m_aov.count.assign(n, 0);
+    if (aovs.has(Aov::Error)) {
+        m_aov.odd.assign(n, Sum3{});
+        m_aov.odd_weight.assign(n, 0.0);
+    }
 }
 
 void Film::add_sample(int x, int y, Spectrum L, float w) {
@@ -46,6 +53,10 @@ void Film::add_sample(int x, int y, Spectrum L, float w, const AovRecord& aov) {
         add3(m_aov.square, i, L * L, w);
         m_aov.weight2[i] += double(w) * w;
     }
+    if (aov.odd && !m_aov.odd.empty() && is_finite(L)) {
+        add3(m_aov.odd, i, L, w);
+        m_aov.odd_weight[i] += w;
+    }
     if (!m_aov.weight.empty()) {
         m_aov.weight[i] += w;
         if (aov.hit) {
@@ -60,8 +71,36 @@ void Film::add_sample(int x, int y, Spectrum L, float w, const AovRecord& aov) {
     }
 }
 
+Spectrum Film::estimated_variance(int x, int y) const {
+    if (m_aov.odd.empty()) return Spectrum(0);
+    const size_t i = size_t(y) * m_width + x;
+    const Pixel& px = m_pixels[i];
+    const double nb = m_aov.odd_weight[i], na = px.weight - nb;
+    // Rounding can leave a sliver of weight in an empty half; 1e-9 of the total is none.
+    if (!(na > 1e-9 * px.weight && nb > 1e-9 * px.weight)) return Spectrum(0);
+    const double k = na * nb / (px.weight * px.weight);
+    Spectrum v;
+    for (int c = 0; c < 3; ++c) {
+        const double b = m_aov.odd[i][c] / nb, a = (px.sum[c] - m_aov.odd[i][c]) / na;
+        v[c] = float((a - b) * (a - b) * k);
+    }
+    return v;
+}
+
+float Film::relative_error(int x, int y) const {
+    const Pixel& px = m_pixels[size_t(y) * m_width + x];
+    if (px.weight == 0) return std::numeric_limits<float>::infinity();
+    const Spectrum v = estimated_variance(x, y);
+    double sum = 0;
+    for (int c = 0; c < 3; ++c) {
+        const double mean = px.sum[c] / px.weight;
+        sum += v[c] / (mean * mean + kRelMseEpsilon);
+    }
+    return float(std::sqrt(sum / 3));
+}
+
 Image Film::resolve_aov(Aov aov) const {
-    const bool scalar = aov == Aov::Depth || aov == Aov::Samples;
+    const bool scalar = aov == Aov::Depth || aov == Aov::Samples || aov == Aov::Error;
     Image img(m_width, m_height, scalar ? 1 : 3);
     if (!m_aovs.has(aov)) return img;
     for (size_t i = 0; i < m_pixels.size(); ++i) {
@@ -86,6 +125,9 @@ Image Film::resolve_aov(Aov aov) const {
                 break;
             case Aov::Samples:
                 out[0] = float(m_aov.count[i]);
+                break;
+            case Aov::Error:
+                out[0] = relative_error(int(i % m_width), int(i / m_width));
                 break;
             case Aov::Variance: {
                 // Weighted variance over the effective sample count, less one: for equal

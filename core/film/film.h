@@ -26,11 +26,20 @@ public:
     // The same, plus what the sample's camera ray hit, weighted by the same w: for a
     // film with AOVs (the loop without AOVs never pays for them).
     void add_sample(int x, int y, Spectrum L, float w, const AovRecord& aov);
+    // Estimated variance of the pixel's beauty (the mean), per channel, from the two
+    // halves of its samples: with A and B the halves' means and nA, nB their weights,
+    // (A - B)^2 nA nB / (nA + nB)^2, unbiased when the halves are independent (each its
+    // own randomised sample stream). 0 without the error AOV or with a half empty.
+    Spectrum estimated_variance(int x, int y) const;
+    // sqrt(mean over R, G, B of variance / (mean^2 + epsilon)): the relative standard
+    // error that --target-error compares, matching relMSE's epsilon (kRelMseEpsilon).
+    float relative_error(int x, int y) const;
     // Linear RGBA image, alpha = 1.
     Image resolve() const;
     // One AOV's image: 3 channels (albedo, normal, position, variance) or 1 (depth,
     // samples). Albedo and normal average over all samples (a miss counts as zero);
     // depth and position over the samples that hit (kNoHitDepth and 0 where none did).
+    // Error is relative_error (1 channel).
     // Variance is that of the pixel's mean: the weighted sample variance over the
     // effective sample count (sum w)^2 / sum w^2, less one; 0 below two samples.
     Image resolve_aov(Aov aov) const;
@@ -46,6 +55,10 @@ private:
         std::vector<Sum3> albedo, normal, position, square;      // square: w L^2
         std::vector<double> weight, hit_weight, depth, weight2;  // weight2: w^2
         std::vector<uint32_t> count;
+        // Error estimate: the sums of the odd-indexed samples (the second half); the
+        // first half is the pixel's total less these.
+        std::vector<Sum3> odd;
+        std::vector<double> odd_weight;
     };
     struct Pixel {
         double sum[3] = {0, 0, 0};

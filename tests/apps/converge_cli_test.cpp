@@ -71,11 +71,13 @@ std::vector<Row> read_csv(const std::string& path) {
     std::istringstream in(read_text(path));
     std::string line;
     std::getline(in, line);
-    EXPECT_EQ(line, "config,spp,seconds,cpu_seconds,mse,relmse,mse_x_time,relmse_x_time");
+    EXPECT_EQ(line,
+              "config,spp,seconds,cpu_seconds,mse,relmse,mse_x_time,relmse_x_time,mean_spp,"
+              "target_error");
     std::vector<Row> rows;
     while (std::getline(in, line)) {
         std::istringstream fields(line);
-        std::string f[8];
+        std::string f[10];
         for (std::string& v : f) std::getline(fields, v, ',');
         Row r{f[0], std::stod(f[1]), std::stod(f[2]), std::stod(f[4]), std::stod(f[5]),
               std::stod(f[6])};
@@ -84,6 +86,9 @@ std::vector<Row> read_csv(const std::string& path) {
         const double relmse_x_time = std::stod(f[7]);
         EXPECT_NEAR(r.mse_x_time, r.mse * r.seconds, 1e-4 * r.mse * r.seconds + 1e-12);
         EXPECT_NEAR(relmse_x_time, r.relmse * r.seconds, 1e-4 * r.relmse * r.seconds + 1e-12);
+        // Without --target-error every pixel takes the checkpoint's spp.
+        EXPECT_EQ(std::stod(f[8]), r.spp);
+        EXPECT_EQ(std::stod(f[9]), 0.0);
         rows.push_back(r);
     }
     return rows;
@@ -182,6 +187,50 @@ TEST(ConvergeCli, ComparesConfigurationsAgainstAGivenReference) {
     for (const char* name : {">indep<", ">sobol<", ">bsdf<"})
         EXPECT_NE(svg.find(name), std::string::npos) << "legend entry " << name;
     EXPECT_NE(read_text(dir.file("cmp/summary.txt")).find("24x24"), std::string::npos);
+}
+
+TEST(ConvergeCli, SweepsAdaptiveTargetsAndSplitsBiasFromVariance) {
+    const test::ScratchDir dir;
+    const std::string scene = write_area_light_scene(dir);
+    ASSERT_EQ(run_penumbra({"render", scene, "-o", dir.file("ref.exr"), "--width", "24",
+                            "--spp", "256", "--seed", "9", "-q", "--no-preview"})
+                  .status,
+              0);
+    const test::CliResult r = run_penumbra(
+        {"converge", scene, "--reference", dir.file("ref.exr"), "-o", dir.file("bv"),
+         "--min-spp", "16", "--max-spp", "64", "--bias-variance", "--config", "uniform:",
+         "--config", "adaptive:--target-error 0.3", "--config", "clamp:--clamp-indirect 0.5",
+         "-q"});
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::istringstream in(read_text(dir.file("bv/convergence.csv")));
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "config,spp,seconds,cpu_seconds,mse,relmse,mse_x_time,relmse_x_time,"
+                    "mean_spp,target_error,variance,bias2");
+    std::vector<double> targets;
+    int rows = 0;
+    while (std::getline(in, line)) {
+        std::istringstream fields(line);
+        std::string f[12];
+        for (std::string& v : f) std::getline(fields, v, ',');
+        ++rows;
+        const double relmse = std::stod(f[5]), variance = std::stod(f[10]);
+        EXPECT_GT(variance, 0) << line;
+        EXPECT_NEAR(variance + std::stod(f[11]), relmse, 1e-5 * relmse) << line;
+        if (f[0] == "adaptive") {
+            targets.push_back(std::stod(f[9]));
+            EXPECT_LE(std::stod(f[8]), 64.0);  // mean spp within --max-spp
+        } else {
+            EXPECT_EQ(std::stod(f[9]), 0.0);
+        }
+    }
+    EXPECT_EQ(rows, 9);
+    // Three targets, each 1/sqrt(2) of the one before, ending at the configuration's.
+    ASSERT_EQ(targets.size(), 3u);
+    EXPECT_NEAR(targets[0], 0.6, 1e-5);
+    EXPECT_NEAR(targets[1], 0.3 * std::sqrt(2.0), 1e-5);
+    EXPECT_NEAR(targets[2], 0.3, 1e-6);
+    EXPECT_NE(read_text(dir.file("bv/summary.txt")).find("bias^2"), std::string::npos);
 }
 
 TEST(ConvergeCli, BadConfigurationOrMissingReferenceIsAnError) {

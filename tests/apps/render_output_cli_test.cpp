@@ -87,6 +87,36 @@ TEST(RenderOutputCli, SameCommandWithAovsIsBitwiseIdenticalForAnyThreadCount) {
     EXPECT_TRUE(a == b) << "EXR files differ between --threads 1 and --threads 2";
 }
 
+TEST(RenderOutputCli, AdaptiveAndFireflyOptionsGoIntoTheFile) {
+    test::ScratchDir dir;
+    // Off by default: none of their header fields.
+    ASSERT_EQ(render({"-q", "--no-preview", "-o", dir.file("plain.exr")}).status, 0);
+    const OIIO::ImageSpec plain = header(dir.file("plain.exr"));
+    for (const char* key : {"penumbra:target_error", "penumbra:clamp_direct",
+                            "penumbra:clamp_indirect", "penumbra:regularize"})
+        EXPECT_FALSE(plain.find_attribute(key)) << key;
+    const Args adaptive = {"render", test::source_path("scenes/cornell-box.gltf"), "--width",
+                           "32", "-q", "--no-preview", "--spp", "64", "--target-error", "0.5",
+                           "--clamp-indirect", "10", "--regularize", "0.2"};
+    Args one = adaptive, two = adaptive;
+    one.insert(one.end(), {"--threads", "1", "-o", dir.file("a1.exr")});
+    two.insert(two.end(), {"--threads", "2", "-o", dir.file("a2.exr")});
+    ASSERT_EQ(test::run_penumbra(one).status, 0) << test::run_penumbra(one).output;
+    ASSERT_EQ(test::run_penumbra(two).status, 0);
+    EXPECT_TRUE(read_file(dir.file("a1.exr")) == read_file(dir.file("a2.exr")))
+        << "adaptive EXR files differ between --threads 1 and --threads 2";
+    const OIIO::ImageSpec spec = header(dir.file("a1.exr"));
+    for (const char* c : {"Error.X", "Samples.X"}) EXPECT_GE(spec.channelindex(c), 0) << c;
+    EXPECT_EQ(spec.get_string_attribute("penumbra:target_error"), "0.500000");
+    EXPECT_EQ(spec.get_string_attribute("penumbra:clamp_indirect"), "10.000000");
+    EXPECT_EQ(spec.get_string_attribute("penumbra:regularize"), "0.200000");
+    EXPECT_FALSE(spec.find_attribute("penumbra:clamp_direct"));
+    const double mean_spp = std::stod(spec.get_string_attribute("penumbra:mean_spp", "0"));
+    EXPECT_GE(mean_spp, 20.0);  // the minimum for E = 0.5: 16 / 0.5^0.3 = 19.7, even
+    EXPECT_LE(mean_spp, 64.0);
+    EXPECT_TRUE(spec.find_attribute("penumbra:unconverged_pixels"));
+}
+
 TEST(RenderOutputCli, TimingAndReferenceGoIntoTheHeader) {
     test::ScratchDir dir;
     ASSERT_EQ(render({"-q", "--no-preview", "-o", dir.file("ref.exr")}).status, 0);

@@ -189,6 +189,40 @@ TEST(Render, InterruptsAndTimeLimitStopBetweenPasses) {
     EXPECT_FALSE(stats.interrupted);
 }
 
+TEST(Render, AdaptiveRenderStopsOnlyAfterWholeFixedPasses) {
+    const Scene scene = cube_on_plane();
+    EmbreeAccel accel(scene);
+    const LightSet lights(scene, nullptr);
+    const RenderContext ctx{scene, accel, lights};
+    const PerspectiveCamera camera(Transform::look_at({2, 3, 4}, {0, 0.3f, 0}, {0, 1, 0}), 0.7f,
+                                   24, 18);
+    const auto integrator = make_integrator("path", {});
+    RenderOptions opt;
+    opt.spp = 256;
+    opt.progress = false;
+    opt.target_error = 0.01;  // not reached at 256 spp
+    // A time limit already spent still renders the first pass, the minimum, and stops
+    // there; the film is exactly the first min_spp samples of every pixel.
+    opt.time_limit = 1e-9;
+    RenderStats stats;
+    const Film film = render(ctx, camera, *integrator, opt, &stats);
+    EXPECT_EQ(stats.spp, 64u);  // adaptive_min_spp(0.01)
+    EXPECT_EQ(stats.passes, 1);
+    EXPECT_EQ(stats.camera_samples, 24u * 18u * 64u);
+    Film direct(24, 18, parse_aovs("error,samples"));
+    ASSERT_TRUE(render_samples(ctx, camera, *integrator, opt, direct, 0, 64));
+    const Image a = film.resolve(), b = direct.resolve();
+    EXPECT_EQ(0, std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * 4));
+    EXPECT_EQ(film.resolve_aov(Aov::Error).pixels, direct.resolve_aov(Aov::Error).pixels);
+    // An interrupt before the first pass renders nothing.
+    std::atomic<int> interrupts{1};
+    opt.interrupts = &interrupts;
+    opt.time_limit = 0;
+    render(ctx, camera, *integrator, opt, &stats);
+    EXPECT_EQ(stats.spp, 0u);
+    EXPECT_TRUE(stats.interrupted);
+}
+
 TEST(Render, PassSizesDoubleWithinTheBudgetPassLengthAndTimeLimit) {
     EXPECT_EQ(next_pass_samples(0, 16, 0, 0), 1u);
     EXPECT_EQ(next_pass_samples(1, 16, 0.01, 0), 1u);

@@ -145,6 +145,36 @@ TEST(JobFile, LightKeys) {
     }
 }
 
+TEST(JobFile, AdaptiveAndFireflyKeys) {
+    const JobFile f = parse_job_file(
+        R"({"defaults": {"target_error": 0.05, "adaptive_min_spp": 32},
+            "jobs": [{"scene": "a.gltf", "clamp_direct": 20, "clamp_indirect": 10,
+                      "regularize": 0.3}]})",
+        "/jobs/j.json");
+    EXPECT_EQ(f.defaults.target_error, 0.05);
+    EXPECT_EQ(f.defaults.adaptive_min_spp, 32);
+    EXPECT_FALSE(f.defaults.clamp_indirect);
+    EXPECT_EQ(f.jobs[0].settings.clamp_direct, 20.0);
+    EXPECT_EQ(f.jobs[0].settings.clamp_indirect, 10.0);
+    EXPECT_EQ(f.jobs[0].settings.regularize, 0.3);
+    EXPECT_FALSE(f.jobs[0].settings.target_error);
+    const std::pair<const char*, const char*> bad[] = {
+        {R"("target_error": 0)", "j.json: jobs[0].target_error: expected a positive number"},
+        {R"("target_error": "low")", "j.json: jobs[0].target_error: expected a positive number"},
+        {R"("clamp_indirect": -1)",
+         "j.json: jobs[0].clamp_indirect: expected a positive number"},
+        {R"("regularize": 2)", "j.json: jobs[0].regularize: expected a roughness in [0, 1]"}};
+    for (const auto& [member, message] : bad) {
+        try {
+            parse_job_file(std::string(R"({"jobs": [{"scene": "a.gltf", )") + member + "}]}",
+                           "j.json");
+            FAIL() << member;
+        } catch (const SceneError& e) {
+            EXPECT_EQ(std::string(e.what()), message);
+        }
+    }
+}
+
 TEST(JobFile, StrictAndTextureLimitKeys) {
     const JobFile f = parse_job_file(
         R"({"defaults": {"strict": true, "max_texture_pixels": 4096},

@@ -2,6 +2,7 @@
 // normal, not at all for depth and position), sample counts and the variance of the mean.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -88,6 +89,40 @@ TEST(FilmAov, AovsNotAskedForAreBlank) {
     film.add_sample(0, 0, {1, 1, 1}, 1, hit({1, 1, 1}, {0, 0, 1}, {0, 0, 0}, 3));
     EXPECT_FLOAT_EQ(film.resolve_aov(Aov::Depth).at(0, 0)[0], 3);
     EXPECT_EQ(film.resolve_aov(Aov::Albedo).at(0, 0)[0], 0);
+}
+
+TEST(FilmAov, ErrorEstimateComesFromTheTwoHalves) {
+    Film film(2, 1, parse_aovs("error"));
+    EXPECT_FALSE(parse_aovs("all").has(Aov::Error));  // it changes the sample streams
+    // Pixel 0: even samples 1 and 3 (weights 1, 1), one odd sample 4 (weight 2): the
+    // halves' means are A = 2 and B = 4, their weights nA = nB = 2.
+    auto add = [&](int x, float v, float w, bool odd) {
+        AovRecord r;
+        r.odd = odd;
+        film.add_sample(x, 0, Spectrum(v, 2 * v, 0), w, r);
+    };
+    add(0, 1, 1, false);
+    add(0, 3, 1, false);
+    add(0, 4, 2, true);
+    // (A - B)^2 nA nB / (nA + nB)^2 = 4 * 4 / 16 = 1; the green channel 4 times that.
+    EXPECT_NEAR(film.estimated_variance(0, 0).x, 1.0, 1e-6);
+    EXPECT_NEAR(film.estimated_variance(0, 0).y, 4.0, 1e-6);
+    EXPECT_EQ(film.estimated_variance(0, 0).z, 0.0f);
+    // mean (3, 6, 0): sqrt((1 / 9.01 + 4 / 36.01 + 0) / 3).
+    EXPECT_NEAR(film.relative_error(0, 0), std::sqrt((1 / 9.01 + 4 / 36.01) / 3), 1e-6);
+    EXPECT_NEAR(film.resolve_aov(Aov::Error).at(0, 0)[0], film.relative_error(0, 0), 1e-7);
+    // Pixel 1: only even samples: no estimate (0), whatever their spread.
+    add(1, 1, 1, false);
+    add(1, 5, 1, false);
+    EXPECT_EQ(film.estimated_variance(1, 0).x, 0.0f);
+    // Unequal halves: nA = 3 (one sample of weight 3, value 1), nB = 1 (value 5):
+    // (4)^2 * 3 * 1 / 16 = 3.
+    Film f2(1, 1, parse_aovs("error"));
+    AovRecord even, odd;
+    odd.odd = true;
+    f2.add_sample(0, 0, Spectrum(1), 3, even);
+    f2.add_sample(0, 0, Spectrum(5), 1, odd);
+    EXPECT_NEAR(f2.estimated_variance(0, 0).x, 3.0, 1e-6);
 }
 
 }  // namespace

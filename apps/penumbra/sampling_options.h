@@ -1,0 +1,19 @@
+// The options that decide how many samples each pixel takes and which are clamped:
+// adaptive sampling to an error target and firefly control (clamps, regularization).
+// Part of the image options, so `converge` configurations can compare them.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "apps/penumbra/render_command.h"
+#include "io/image_writer.h"
+
+namespace penumbra {
+
+void add_sampling_options(CLI::App* cmd, RenderCommandOptions& o);
+
+// The header fields of the options that are on (none when all are off, so a render
+// without them writes the same header as before they existed).
+Metadata sampling_metadata(const RenderCommandOptions& o);
+
+}  // namespace penumbra
