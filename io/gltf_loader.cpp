@@ -17,6 +17,7 @@
 #include "io/gltf_compression.h"
 #include "io/gltf_context.h"
 #include "io/gltf_deform.h"
+#include "io/gltf_mesh_checks.h"
 #include "io/gltf_node_motion.h"
 #include "io/gltf_signature.h"
 #include "io/gltf_variants.h"
@@ -241,7 +242,8 @@ Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
     scene.shutter_open = shutter.open;
     scene.shutter_close = shutter.close;
     std::vector<MeshOrigin> origins;
-    load_meshes(ctx, scene, origins);
+    MeshChecks mesh_checks(ctx);
+    load_meshes(ctx, scene, origins, mesh_checks);
     load_materials(ctx, scene);
     convert_scene_colors(scene, options.rec709_to_working);
     const GltfAnimations animations(ctx);
@@ -251,6 +253,9 @@ Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
         load_nodes(ctx, scene_index, motion, origins, scene);
     else
         ctx.warn("scenes", "the file defines no scene; nothing will be rendered");
+    // Summary warnings come last: under --strict, an element's own error is reported
+    // before them, as without them.
+    mesh_checks.report();
     warn_unnormalized_skin_weights(ctx);
     return scene;
 }

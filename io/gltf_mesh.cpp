@@ -5,6 +5,7 @@
 
 #include "io/gltf_accessor.h"
 #include "io/gltf_context.h"
+#include "io/gltf_mesh_checks.h"
 #include "io/gltf_variants.h"
 
 namespace penumbra {
@@ -115,14 +116,11 @@ void make_flat(TriangleMesh& mesh) {
 
 // Index list of `mode` to a triangle list. Strips alternate the order of odd triangles
 // so that all keep the first one's winding (glTF 2.0, section 3.7.2.1).
-std::vector<uint32_t> to_triangle_list(const GltfContext& ctx, const std::string& el, int mode,
+std::vector<uint32_t> to_triangle_list(MeshChecks& checks, const std::string& el, int mode,
                                        const std::vector<uint32_t>& in) {
     std::vector<uint32_t> out;
     if (mode == TINYGLTF_MODE_TRIANGLES) {
-        if (in.size() % 3 != 0)
-            ctx.warn(el, "index count " + std::to_string(in.size()) +
-                             " is not a multiple of 3; the last " + std::to_string(in.size() % 3) +
-                             " are ignored");
+        if (in.size() % 3 != 0) checks.partial_triangle(el, in.size());
         out.assign(in.begin(), in.begin() + (in.size() / 3) * 3);
         return out;
     }
@@ -173,8 +171,8 @@ void check_emitter_winding(const GltfContext& ctx, int material, const TriangleM
 
 // One triangle primitive; false when it has no triangles to render (skipped, with a
 // warning).
-bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, const std::string& el,
-                     TriangleMesh& mesh, MeshOrigin& origin) {
+bool build_primitive(const GltfContext& ctx, MeshChecks& checks, const tinygltf::Primitive& prim,
+                     const std::string& el, TriangleMesh& mesh, MeshOrigin& origin) {
     const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
     if (mode < TINYGLTF_MODE_POINTS || mode > TINYGLTF_MODE_TRIANGLE_FAN)
         ctx.fail(el, "mode " + std::to_string(mode) + " is not a glTF primitive mode");
@@ -196,6 +194,7 @@ bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, co
     for (size_t i = 0; i < n; ++i)
         if (!is_finite(mesh.positions[i]))
             ctx.fail(el, "POSITION element " + std::to_string(i) + " is not finite");
+    checks.check_position_bounds(pos_index, mesh.positions);
 
     mesh.normals = to_vec3(reader.read("NORMAL", kNormal, n));
     for (size_t i = 0; i < mesh.normals.size(); ++i) {
@@ -245,9 +244,9 @@ bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, co
         indices.resize(n);
         std::iota(indices.begin(), indices.end(), 0u);
     }
-    mesh.indices = to_triangle_list(ctx, el, mode, indices);
+    mesh.indices = to_triangle_list(checks, el, mode, indices);
     if (mesh.indices.empty()) {
-        ctx.warn(el, "has no triangles; skipped");
+        checks.no_triangles(el);
         return false;
     }
     check_emitter_winding(ctx, prim.material, mesh);
@@ -263,7 +262,8 @@ bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, co
 
 }  // namespace
 
-void load_meshes(const GltfContext& ctx, Scene& scene, std::vector<MeshOrigin>& origins) {
+void load_meshes(const GltfContext& ctx, Scene& scene, std::vector<MeshOrigin>& origins,
+                 MeshChecks& checks) {
     const tinygltf::Model& m = ctx.model;
     for (size_t i = 0; i < m.meshes.size(); ++i) {
         const tinygltf::Mesh& gm = m.meshes[i];
@@ -274,7 +274,7 @@ void load_meshes(const GltfContext& ctx, Scene& scene, std::vector<MeshOrigin>& 
             const tinygltf::Primitive& prim = gm.primitives[j];
             TriangleMesh mesh;
             MeshOrigin origin{int(i), int(j), {}};
-            if (!build_primitive(ctx, prim, el, mesh, origin)) continue;
+            if (!build_primitive(ctx, checks, prim, el, mesh, origin)) continue;
             if (gm.name.empty())
                 mesh.name = el;
             else if (gm.primitives.size() == 1)
