@@ -86,10 +86,13 @@ private:
     std::string m_el;
 };
 
+// in[indices[i]] for each i, with a spare element of capacity as to_vec3's.
 template <typename V>
 std::vector<V> gather(const std::vector<V>& in, const std::vector<uint32_t>& indices) {
     if (in.empty()) return {};
-    std::vector<V> out(indices.size());
+    std::vector<V> out;
+    out.reserve(indices.size() + 1);
+    out.resize(indices.size());
     for (size_t i = 0; i < indices.size(); ++i) out[i] = in[indices[i]];
     return out;
 }
@@ -140,8 +143,12 @@ const char* mode_name(int mode) {
     return names[mode];
 }
 
+// With one spare element of capacity: Embree then reads positions in place instead of
+// copying them (its 16-byte loads read past the last vertex; embree_accel.cpp).
 std::vector<Vec3> to_vec3(const std::vector<float>& v) {
-    std::vector<Vec3> out(v.size() / 3);
+    std::vector<Vec3> out;
+    out.reserve(v.size() / 3 + 1);
+    out.resize(v.size() / 3);
     for (size_t i = 0; i < out.size(); ++i) out[i] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
     return out;
 }
@@ -204,6 +211,8 @@ bool build_primitive(const GltfContext& ctx, MeshChecks& checks, const tinygltf:
         if (length_squared(nrm) > 0) nrm = normalize(nrm);
     }
     const std::vector<float> tangents = reader.read("TANGENT", kTangent, n);
+    // Arrays sized once: growing them would leave up to half their capacity unused.
+    mesh.tangents.reserve(tangents.size() / 4);
     for (size_t i = 0; i + 3 < tangents.size(); i += 4) {
         const Vec4 t(tangents[i], tangents[i + 1], tangents[i + 2], tangents[i + 3]);
         // A NaN would poison every normal-mapped frame it touches; zero-length ones are
@@ -216,11 +225,13 @@ bool build_primitive(const GltfContext& ctx, MeshChecks& checks, const tinygltf:
     std::vector<Vec2>* uv_out[2] = {&mesh.uv0, &mesh.uv1};
     for (int k = 0; k < 2; ++k) {
         const std::vector<float> uv = reader.read(uv_names[k], kTexcoord, n);
+        uv_out[k]->reserve(uv.size() / 2);
         for (size_t i = 0; i + 1 < uv.size(); i += 2) uv_out[k]->push_back({uv[i], uv[i + 1]});
     }
     int color_components = 0;
     const std::vector<float> colors = reader.read("COLOR_0", kColor, n, &color_components);
     const size_t cc = size_t(color_components);
+    if (cc > 0) mesh.colors.reserve(colors.size() / cc);
     for (size_t i = 0; cc > 0 && i + cc <= colors.size(); i += cc)
         mesh.colors.push_back(
             {colors[i], colors[i + 1], colors[i + 2], cc == 4 ? colors[i + 3] : 1.0f});

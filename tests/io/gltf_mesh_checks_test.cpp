@@ -1,12 +1,14 @@
 // Out-of-spec but renderable mesh data, one summary warning per kind and file
 // (io/gltf_mesh_checks.cpp): POSITION accessors without min/max or with a min/max the
 // data disagree with, index counts that are not whole triangles, primitives without
-// triangles. --strict makes each an error.
+// triangles. --strict makes each an error. Also: loaded meshes are not duplicated.
 #include <gtest/gtest.h>
 
 #include <cstring>
 
+#include "core/accel/embree_accel.h"
 #include "core/error.h"
+#include "core/scene/scene_stats.h"
 #include "io/gltf_loader.h"
 #include "support/gltf_builder.h"
 
@@ -166,6 +168,46 @@ TEST(GltfMeshChecks, PartialAndEmptyPrimitivesAreOneWarningEach) {
               1u)
         << log;
     EXPECT_EQ(s.meshes.size(), 2u);
+}
+
+// A 200 x 100 grid (40000 triangles) with normals and UVs: its vertex and index arrays are
+// held once (28.3 bytes per triangle: 32 bytes for each of 20301 vertices, 12 for each
+// triangle's indices, plus Embree's spare vertex), and Embree reads them in place.
+TEST(GltfMeshChecks, LoadedMeshesAreHeldOnceAndSharedWithEmbree) {
+    const ScratchDir dir;
+    GltfBuilder b;
+    const int cols = 200, rows = 100;
+    std::vector<float> pos, nrm, uv;
+    for (int j = 0; j <= rows; ++j)
+        for (int i = 0; i <= cols; ++i) {
+            pos.insert(pos.end(), {float(i), 0.01f * float((i * j) % 7), float(j)});
+            nrm.insert(nrm.end(), {0, 1, 0});
+            uv.insert(uv.end(), {float(i) / cols, float(j) / rows});
+        }
+    std::vector<uint32_t> idx;
+    for (int j = 0; j < rows; ++j)
+        for (int i = 0; i < cols; ++i) {
+            const uint32_t a = uint32_t(j * (cols + 1) + i), c = a + cols + 1;
+            idx.insert(idx.end(), {a, c, a + 1, a + 1, c, c + 1});
+        }
+    const std::string prim =
+        "{\"attributes\":{\"POSITION\":" + std::to_string(b.add(pos, test::kFloat, "VEC3")) +
+        ",\"NORMAL\":" + std::to_string(b.add(nrm, test::kFloat, "VEC3")) +
+        ",\"TEXCOORD_0\":" + std::to_string(b.add(uv, test::kFloat, "VEC2")) +
+        "},\"indices\":" + std::to_string(b.add(idx, test::kUInt, "SCALAR")) + "}";
+    Scene s;
+    const std::string log = warnings_of(
+        b.write(dir, "grid.gltf", test::one_mesh_scene(prim), test::BufferStorage::ExternalBin),
+        &s);
+    EXPECT_EQ(log, "");
+    ASSERT_EQ(s.meshes.size(), 1u);
+    const size_t triangles = s.meshes[0].triangle_count();
+    ASSERT_EQ(triangles, size_t(2 * cols * rows));
+    const size_t exact = 32 * pos.size() / 3 + 12 * triangles;
+    EXPECT_GE(mesh_memory_bytes(s), exact);
+    EXPECT_LE(mesh_memory_bytes(s), exact + 64);
+    const EmbreeAccel accel(s);
+    EXPECT_EQ(accel.copied_bytes(), 0u);
 }
 
 }  // namespace
