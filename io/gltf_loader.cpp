@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstring>
+#include <ctime>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -204,6 +206,25 @@ tinygltf::Model parse(const std::string& path, bool strict) {
     return model;
 }
 
+// Wall and process CPU time since the previous lap.
+class StageClock {
+public:
+    StageClock() : m_wall(std::chrono::steady_clock::now()), m_cpu(std::clock()) {}
+    GltfLoadStats::Stage lap() {
+        const auto wall = std::chrono::steady_clock::now();
+        const std::clock_t cpu = std::clock();
+        const GltfLoadStats::Stage s{std::chrono::duration<double>(wall - m_wall).count(),
+                                     double(cpu - m_cpu) / CLOCKS_PER_SEC};
+        m_wall = wall;
+        m_cpu = cpu;
+        return s;
+    }
+
+private:
+    std::chrono::steady_clock::time_point m_wall;
+    std::clock_t m_cpu;
+};
+
 }  // namespace
 
 void GltfContext::warn(const std::string& element, const std::string& problem) const {
@@ -222,8 +243,12 @@ GltfAnimations load_gltf_animations(const std::string& path) {
     return GltfAnimations(ctx);
 }
 
-Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
+Scene load_gltf(const std::string& path, const GltfLoadOptions& options, GltfLoadStats* stats) {
+    GltfLoadStats local;
+    GltfLoadStats& st = stats ? *stats : local;
+    StageClock clock;
     const tinygltf::Model model = parse(path, options.strict);
+    st.parse = clock.lap();
     GltfContext ctx{model, path, options.rec709_to_working, options.light_units};
     ctx.strict = options.strict;
     ctx.max_texture_pixels = options.max_texture_pixels;
@@ -244,8 +269,10 @@ Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
     std::vector<MeshOrigin> origins;
     MeshChecks mesh_checks(ctx);
     load_meshes(ctx, scene, origins, mesh_checks);
+    st.meshes = clock.lap();
     load_materials(ctx, scene);
     convert_scene_colors(scene, options.rec709_to_working);
+    st.materials = clock.lap();
     const GltfAnimations animations(ctx);
     const NodeMotion motion(ctx, animations, shutter);
     const int scene_index = choose_scene(ctx, options.scene);
@@ -257,6 +284,7 @@ Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
     // before them, as without them.
     mesh_checks.report();
     warn_unnormalized_skin_weights(ctx);
+    st.nodes = clock.lap();
     return scene;
 }
 
