@@ -22,6 +22,7 @@ struct GltfContext {
     LightUnits light_units = LightUnits::Photometric;  // KHR_lights_punctual intensities
     int variant = -1;  // KHR_materials_variants index chosen; -1: default materials
     bool strict = false;  // warn() and warn_once() throw, as fail() does (--strict)
+    bool silent = false;  // warn() and warn_once() do nothing (a dry run's context)
     uint64_t max_texture_pixels = uint64_t(1) << 28;  // GltfLoadOptions::max_texture_pixels
 
     // Throws SceneError "<file>: <element>: <problem>".
