@@ -143,13 +143,6 @@ AnimationCurve read_curve(const GltfContext& ctx, size_t a, int s, Path path, in
     return c;
 }
 
-// "(nodes[1] rotation, nodes[2] scale, ...)": up to three examples.
-std::string examples(const std::vector<std::string>& items) {
-    std::string s = " (";
-    for (size_t i = 0; i < items.size() && i < 3; ++i) s += (i ? ", " : "") + items[i];
-    return s + (items.size() > 3 ? ", ...)" : ")");
-}
-
 }  // namespace
 
 void AnimationCurve::sample(double t, double* out) const {

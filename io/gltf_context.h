@@ -22,6 +22,7 @@ struct GltfContext {
     LightUnits light_units = LightUnits::Photometric;  // KHR_lights_punctual intensities
     int variant = -1;  // KHR_materials_variants index chosen; -1: default materials
     bool strict = false;  // warn() and warn_once() throw, as fail() does (--strict)
+    bool silent = false;  // warn() and warn_once() do nothing (a dry run's context)
     uint64_t max_texture_pixels = uint64_t(1) << 28;  // GltfLoadOptions::max_texture_pixels
 
     // Throws SceneError "<file>: <element>: <problem>".
@@ -48,6 +49,14 @@ inline std::string element(const char* array, size_t i) {
     return std::string(array) + "[" + std::to_string(i) + "]";
 }
 
+// " (nodes[1] rotation, nodes[2] scale, ...)": up to three examples, for the summary
+// warnings that stand for many elements of one kind.
+inline std::string examples(const std::vector<std::string>& items) {
+    std::string s = " (";
+    for (size_t i = 0; i < items.size() && i < 3; ++i) s += (i ? ", " : "") + items[i];
+    return s + (items.size() > 3 ? ", ...)" : ")");
+}
+
 // Where a Scene::meshes entry came from: its glTF mesh and primitive and, when its
 // vertices were split per triangle for flat shading (and skins or morph targets need the
 // file's vertices), the file vertex of each of its vertices.
@@ -56,10 +65,13 @@ struct MeshOrigin {
     std::vector<uint32_t> source_vertex;  // empty: vertex i is the file's vertex i
 };
 
+class MeshChecks;
+
 // Each glTF mesh becomes Scene::objects[i] (same index), with one TriangleMesh per
 // triangle primitive appended to Scene::meshes (gltf_mesh.cpp), and its origin to
-// `origins` (same index).
-void load_meshes(const GltfContext& ctx, Scene& scene, std::vector<MeshOrigin>& origins);
+// `origins` (same index). Out-of-spec data is counted in `checks` (gltf_mesh_checks.h).
+void load_meshes(const GltfContext& ctx, Scene& scene, std::vector<MeshOrigin>& origins,
+                 MeshChecks& checks);
 
 // Materials, and the textures and images they use, decoded with OIIO
 // (gltf_material.cpp). Only images that a material references are decoded.

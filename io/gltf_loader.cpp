@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstring>
+#include <ctime>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +19,7 @@
 #include "io/gltf_compression.h"
 #include "io/gltf_context.h"
 #include "io/gltf_deform.h"
+#include "io/gltf_mesh_checks.h"
 #include "io/gltf_node_motion.h"
 #include "io/gltf_signature.h"
 #include "io/gltf_variants.h"
@@ -203,14 +206,35 @@ tinygltf::Model parse(const std::string& path, bool strict) {
     return model;
 }
 
+// Wall and process CPU time since the previous lap.
+class StageClock {
+public:
+    StageClock() : m_wall(std::chrono::steady_clock::now()), m_cpu(std::clock()) {}
+    GltfLoadStats::Stage lap() {
+        const auto wall = std::chrono::steady_clock::now();
+        const std::clock_t cpu = std::clock();
+        const GltfLoadStats::Stage s{std::chrono::duration<double>(wall - m_wall).count(),
+                                     double(cpu - m_cpu) / CLOCKS_PER_SEC};
+        m_wall = wall;
+        m_cpu = cpu;
+        return s;
+    }
+
+private:
+    std::chrono::steady_clock::time_point m_wall;
+    std::clock_t m_cpu;
+};
+
 }  // namespace
 
 void GltfContext::warn(const std::string& element, const std::string& problem) const {
+    if (silent) return;
     if (strict) fail(element, problem + " [--strict]");
     LOG_WARNING(file << ": " << element << ": " << problem);
 }
 
 void GltfContext::warn_once(const std::string& element, const std::string& problem) const {
+    if (silent) return;
     if (strict) fail(element, problem + " [--strict]");
     log_once(LogLevel::Warning, file + ": " + element + ": " + problem);
 }
@@ -221,8 +245,12 @@ GltfAnimations load_gltf_animations(const std::string& path) {
     return GltfAnimations(ctx);
 }
 
-Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
+Scene load_gltf(const std::string& path, const GltfLoadOptions& options, GltfLoadStats* stats) {
+    GltfLoadStats local;
+    GltfLoadStats& st = stats ? *stats : local;
+    StageClock clock;
     const tinygltf::Model model = parse(path, options.strict);
+    st.parse = clock.lap();
     GltfContext ctx{model, path, options.rec709_to_working, options.light_units};
     ctx.strict = options.strict;
     ctx.max_texture_pixels = options.max_texture_pixels;
@@ -241,9 +269,12 @@ Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
     scene.shutter_open = shutter.open;
     scene.shutter_close = shutter.close;
     std::vector<MeshOrigin> origins;
-    load_meshes(ctx, scene, origins);
+    MeshChecks mesh_checks(ctx);
+    load_meshes(ctx, scene, origins, mesh_checks);
+    st.meshes = clock.lap();
     load_materials(ctx, scene);
     convert_scene_colors(scene, options.rec709_to_working);
+    st.materials = clock.lap();
     const GltfAnimations animations(ctx);
     const NodeMotion motion(ctx, animations, shutter);
     const int scene_index = choose_scene(ctx, options.scene);
@@ -251,7 +282,11 @@ Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
         load_nodes(ctx, scene_index, motion, origins, scene);
     else
         ctx.warn("scenes", "the file defines no scene; nothing will be rendered");
+    // Summary warnings come last: under --strict, an element's own error is reported
+    // before them, as without them.
+    mesh_checks.report();
     warn_unnormalized_skin_weights(ctx);
+    st.nodes = clock.lap();
     return scene;
 }
 

@@ -33,9 +33,24 @@ struct GltfLoadOptions {
     uint64_t max_texture_pixels = kDefaultMaxTexturePixels;
 };
 
+// Where load_gltf's time went, for big scenes (docs/performance.md, "Big scenes"): wall
+// seconds, and CPU seconds of the whole process (all threads), which a busy machine
+// inflates less.
+struct GltfLoadStats {
+    struct Stage {
+        double seconds = 0, cpu_seconds = 0;
+    };
+    Stage parse;      // the file and its buffers read, JSON parsed, decompressed
+    Stage meshes;     // accessors to TriangleMeshes, with their checks
+    Stage materials;  // materials, with their texture images decoded
+    Stage nodes;      // animations, the node tree, instances, deformation
+};
+
 // Loads the file at path; throws SceneError for bad input, including a shutter that
 // closes before it opens. Cameras and lights are only those the file defines; the
-// caller adds defaults (see camera/default_camera.h).
-Scene load_gltf(const std::string& path, const GltfLoadOptions& options = {});
+// caller adds defaults (see camera/default_camera.h). `stats`, when given, receives the
+// time each stage took.
+Scene load_gltf(const std::string& path, const GltfLoadOptions& options = {},
+                GltfLoadStats* stats = nullptr);
 
 }  // namespace penumbra

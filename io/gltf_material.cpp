@@ -4,6 +4,8 @@
 // gltf_material_extensions.cpp. Colour textures (base colour, emissive, specular colour,
 // specular-glossiness) are sRGB-encoded and decoded to linear; data textures are linear.
 // Every texture reference may carry KHR_texture_transform.
+#include <exception>
+
 #include "io/gltf_material_extensions.h"
 #include "io/gltf_material_json.h"
 #include "io/gltf_material_textures.h"
@@ -127,7 +129,24 @@ MaterialDesc load_material(const GltfContext& ctx, size_t i, TextureTable& textu
 }  // namespace
 
 void load_materials(const GltfContext& ctx, Scene& scene) {
-    TextureTable textures(ctx, scene);
+    // Decoding texture images is most of a textured scene's load time, so they decode in
+    // parallel: a silent dry run over the materials (into a scratch scene) lists them in
+    // use order, then the real pass takes them. An error stops the dry run; the real pass
+    // reports it where a serial load would.
+    ImagePrefetch prefetch;
+    {
+        GltfContext dry = ctx;
+        dry.silent = true;
+        Scene scratch;
+        TextureTable collect(dry, scratch, &prefetch);
+        try {
+            for (size_t i = 0; i < ctx.model.materials.size(); ++i)
+                load_material(dry, i, collect);
+        } catch (const std::exception&) {
+        }
+    }
+    prefetch.decode_all();
+    TextureTable textures(ctx, scene, &prefetch);
     for (size_t i = 0; i < ctx.model.materials.size(); ++i)
         scene.materials.push_back(load_material(ctx, i, textures));
 }

@@ -17,7 +17,8 @@ const tinygltf::Value& texture_transform(const tinygltf::ExtensionMap& extension
 
 }  // namespace
 
-TextureTable::TextureTable(const GltfContext& ctx, Scene& scene) : m_ctx(ctx), m_scene(scene) {
+TextureTable::TextureTable(const GltfContext& ctx, Scene& scene, ImagePrefetch* prefetch)
+    : m_ctx(ctx), m_scene(scene), m_prefetch(prefetch) {
     for (const std::string& name : ctx.model.extensionsUsed)
         if (name == "EXT_texture_webp") m_allow_webp = true;
 }
@@ -147,7 +148,12 @@ int TextureTable::image_index(int index, ImageEncoding encoding) {
     limits.max_pixels = m_ctx.max_texture_pixels;
     Image img;
     try {
-        img = decode_texture_image(bytes, m_ctx.file + ": " + named, encoding, limits);
+        if (m_prefetch && m_prefetch->collecting()) {
+            m_prefetch->record(key, std::move(bytes), m_ctx.file + ": " + named, encoding, limits);
+            return 0;  // a dry run's placeholder
+        }
+        if (!m_prefetch || !m_prefetch->take(key, &img))
+            img = decode_texture_image(bytes, m_ctx.file + ": " + named, encoding, limits);
     } catch (const ImageDecodeError& e) {
         // Renderable without it: the textures using it are left out, so their materials
         // use their factors alone; one warning per image, whichever encodings use it.

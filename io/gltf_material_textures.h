@@ -8,13 +8,16 @@
 #include <utility>
 
 #include "io/gltf_context.h"
+#include "io/gltf_image_prefetch.h"
 #include "io/image_reader.h"
 
 namespace penumbra {
 
 class TextureTable {
 public:
-    TextureTable(const GltfContext& ctx, Scene& scene);
+    // With `prefetch`, images are recorded there while it is collecting, and taken from
+    // it once decoded (gltf_image_prefetch.h).
+    TextureTable(const GltfContext& ctx, Scene& scene, ImagePrefetch* prefetch = nullptr);
 
     // The reference for a glTF textureInfo at element path `el`, with the extensions of
     // that textureInfo (for KHR_texture_transform). texture -1: none. A texture whose
@@ -39,6 +42,7 @@ private:
     bool m_allow_webp = false;  // EXT_texture_webp is used: WebP images are glTF images
     std::map<std::pair<int, int>, int> m_textures, m_images;  // -1: undecodable
     std::set<int> m_undecodable;                              // glTF image indices
+    ImagePrefetch* m_prefetch = nullptr;
 };
 
 }  // namespace penumbra

@@ -5,6 +5,7 @@
 
 #include "io/gltf_accessor.h"
 #include "io/gltf_context.h"
+#include "io/gltf_mesh_checks.h"
 #include "io/gltf_variants.h"
 
 namespace penumbra {
@@ -85,10 +86,13 @@ private:
     std::string m_el;
 };
 
+// in[indices[i]] for each i, with a spare element of capacity as to_vec3's.
 template <typename V>
 std::vector<V> gather(const std::vector<V>& in, const std::vector<uint32_t>& indices) {
     if (in.empty()) return {};
-    std::vector<V> out(indices.size());
+    std::vector<V> out;
+    out.reserve(indices.size() + 1);
+    out.resize(indices.size());
     for (size_t i = 0; i < indices.size(); ++i) out[i] = in[indices[i]];
     return out;
 }
@@ -115,14 +119,11 @@ void make_flat(TriangleMesh& mesh) {
 
 // Index list of `mode` to a triangle list. Strips alternate the order of odd triangles
 // so that all keep the first one's winding (glTF 2.0, section 3.7.2.1).
-std::vector<uint32_t> to_triangle_list(const GltfContext& ctx, const std::string& el, int mode,
+std::vector<uint32_t> to_triangle_list(MeshChecks& checks, const std::string& el, int mode,
                                        const std::vector<uint32_t>& in) {
     std::vector<uint32_t> out;
     if (mode == TINYGLTF_MODE_TRIANGLES) {
-        if (in.size() % 3 != 0)
-            ctx.warn(el, "index count " + std::to_string(in.size()) +
-                             " is not a multiple of 3; the last " + std::to_string(in.size() % 3) +
-                             " are ignored");
+        if (in.size() % 3 != 0) checks.partial_triangle(el, in.size());
         out.assign(in.begin(), in.begin() + (in.size() / 3) * 3);
         return out;
     }
@@ -142,8 +143,12 @@ const char* mode_name(int mode) {
     return names[mode];
 }
 
+// With one spare element of capacity: Embree then reads positions in place instead of
+// copying them (its 16-byte loads read past the last vertex; embree_accel.cpp).
 std::vector<Vec3> to_vec3(const std::vector<float>& v) {
-    std::vector<Vec3> out(v.size() / 3);
+    std::vector<Vec3> out;
+    out.reserve(v.size() / 3 + 1);
+    out.resize(v.size() / 3);
     for (size_t i = 0; i < out.size(); ++i) out[i] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
     return out;
 }
@@ -173,8 +178,8 @@ void check_emitter_winding(const GltfContext& ctx, int material, const TriangleM
 
 // One triangle primitive; false when it has no triangles to render (skipped, with a
 // warning).
-bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, const std::string& el,
-                     TriangleMesh& mesh, MeshOrigin& origin) {
+bool build_primitive(const GltfContext& ctx, MeshChecks& checks, const tinygltf::Primitive& prim,
+                     const std::string& el, TriangleMesh& mesh, MeshOrigin& origin) {
     const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
     if (mode < TINYGLTF_MODE_POINTS || mode > TINYGLTF_MODE_TRIANGLE_FAN)
         ctx.fail(el, "mode " + std::to_string(mode) + " is not a glTF primitive mode");
@@ -196,6 +201,7 @@ bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, co
     for (size_t i = 0; i < n; ++i)
         if (!is_finite(mesh.positions[i]))
             ctx.fail(el, "POSITION element " + std::to_string(i) + " is not finite");
+    checks.check_position_bounds(pos_index, mesh.positions);
 
     mesh.normals = to_vec3(reader.read("NORMAL", kNormal, n));
     for (size_t i = 0; i < mesh.normals.size(); ++i) {
@@ -205,6 +211,8 @@ bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, co
         if (length_squared(nrm) > 0) nrm = normalize(nrm);
     }
     const std::vector<float> tangents = reader.read("TANGENT", kTangent, n);
+    // Arrays sized once: growing them would leave up to half their capacity unused.
+    mesh.tangents.reserve(tangents.size() / 4);
     for (size_t i = 0; i + 3 < tangents.size(); i += 4) {
         const Vec4 t(tangents[i], tangents[i + 1], tangents[i + 2], tangents[i + 3]);
         // A NaN would poison every normal-mapped frame it touches; zero-length ones are
@@ -217,11 +225,13 @@ bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, co
     std::vector<Vec2>* uv_out[2] = {&mesh.uv0, &mesh.uv1};
     for (int k = 0; k < 2; ++k) {
         const std::vector<float> uv = reader.read(uv_names[k], kTexcoord, n);
+        uv_out[k]->reserve(uv.size() / 2);
         for (size_t i = 0; i + 1 < uv.size(); i += 2) uv_out[k]->push_back({uv[i], uv[i + 1]});
     }
     int color_components = 0;
     const std::vector<float> colors = reader.read("COLOR_0", kColor, n, &color_components);
     const size_t cc = size_t(color_components);
+    if (cc > 0) mesh.colors.reserve(colors.size() / cc);
     for (size_t i = 0; cc > 0 && i + cc <= colors.size(); i += cc)
         mesh.colors.push_back(
             {colors[i], colors[i + 1], colors[i + 2], cc == 4 ? colors[i + 3] : 1.0f});
@@ -245,9 +255,9 @@ bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, co
         indices.resize(n);
         std::iota(indices.begin(), indices.end(), 0u);
     }
-    mesh.indices = to_triangle_list(ctx, el, mode, indices);
+    mesh.indices = to_triangle_list(checks, el, mode, indices);
     if (mesh.indices.empty()) {
-        ctx.warn(el, "has no triangles; skipped");
+        checks.no_triangles(el);
         return false;
     }
     check_emitter_winding(ctx, prim.material, mesh);
@@ -263,7 +273,8 @@ bool build_primitive(const GltfContext& ctx, const tinygltf::Primitive& prim, co
 
 }  // namespace
 
-void load_meshes(const GltfContext& ctx, Scene& scene, std::vector<MeshOrigin>& origins) {
+void load_meshes(const GltfContext& ctx, Scene& scene, std::vector<MeshOrigin>& origins,
+                 MeshChecks& checks) {
     const tinygltf::Model& m = ctx.model;
     for (size_t i = 0; i < m.meshes.size(); ++i) {
         const tinygltf::Mesh& gm = m.meshes[i];
@@ -274,7 +285,7 @@ void load_meshes(const GltfContext& ctx, Scene& scene, std::vector<MeshOrigin>& 
             const tinygltf::Primitive& prim = gm.primitives[j];
             TriangleMesh mesh;
             MeshOrigin origin{int(i), int(j), {}};
-            if (!build_primitive(ctx, prim, el, mesh, origin)) continue;
+            if (!build_primitive(ctx, checks, prim, el, mesh, origin)) continue;
             if (gm.name.empty())
                 mesh.name = el;
             else if (gm.primitives.size() == 1)

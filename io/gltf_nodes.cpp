@@ -202,6 +202,8 @@ void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motio
     const std::string sel = element("scenes", size_t(scene_index));
     std::vector<bool> visited(m.nodes.size(), false);
     std::vector<LightNode> lights;
+    // Renderable but surprising: one summary warning per kind, after the tree.
+    std::vector<std::string> singular, instanced_deformed;
     // Depth-first with an explicit stack, so that deep hierarchies cannot overflow the
     // call stack; each entry is a node and its parent's world transform.
     std::vector<std::pair<int, Transform>> stack;
@@ -233,8 +235,7 @@ void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motio
             }
         } catch (const std::invalid_argument&) {
             // Zero scale is valid glTF (it hides a subtree); nothing below can be seen.
-            ctx.warn(el, "singular transform (zero scale?) at a time step; its subtree is "
-                         "skipped");
+            singular.push_back(el);
             continue;
         }
         if (node.mesh != -1) {
@@ -244,8 +245,7 @@ void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motio
                     ? std::nullopt
                     : add_deformed_object(ctx, motion, index, origins, scene);
             if (deformed && node.extensions.count("EXT_mesh_gpu_instancing"))
-                ctx.warn(el, "EXT_mesh_gpu_instancing on a skinned or morphed mesh: one "
-                             "deformed copy is drawn, at the node");
+                instanced_deformed.push_back(el);
             if (!scene.objects[size_t(node.mesh)].meshes.empty() &&
                 (deformed || !add_gpu_instances(ctx, el, node, index, world, steps, scene))) {
                 Instance inst;
@@ -273,6 +273,17 @@ void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motio
             stack.emplace_back(*it, world);
         }
     }
+
+    if (!singular.empty())
+        ctx.warn("nodes", std::to_string(singular.size()) +
+                              " node(s) have a singular transform (zero scale?) at a time "
+                              "step; their subtrees are skipped" +
+                              examples(singular));
+    if (!instanced_deformed.empty())
+        ctx.warn("nodes", std::to_string(instanced_deformed.size()) +
+                              " node(s) use EXT_mesh_gpu_instancing on a skinned or morphed "
+                              "mesh: one deformed copy is drawn, at the node" +
+                              examples(instanced_deformed));
 
     const Bounds3 bounds = scene.bounds();
     const float radius = bounds.empty() ? 1.0f : std::max(1.0f, 0.5f * length(bounds.diagonal()));

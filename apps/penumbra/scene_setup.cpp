@@ -4,7 +4,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <optional>
 #include <stdexcept>
 
@@ -14,6 +16,8 @@
 #include "core/error.h"
 #include "core/lights/default_lights.h"
 #include "core/log.h"
+#include "core/progress.h"
+#include "core/scene/scene_stats.h"
 #include "io/gltf_loader.h"
 #include "io/image_reader.h"
 #include "io/scene_color.h"
@@ -237,7 +241,8 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     } catch (const std::invalid_argument& e) {
         throw SceneError(path + ": " + e.what());
     }
-    s->scene = load_gltf(path, load);
+    GltfLoadStats load_stats;
+    s->scene = load_gltf(path, load, &load_stats);
     s->load_seconds = since(t0);
     Scene& scene = s->scene;
 
@@ -275,8 +280,25 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     s->lights = std::make_unique<LightSet>(scene, std::move(env));
 
     t0 = Clock::now();
+    const std::clock_t build_cpu = std::clock();
     s->accel = make_accel(parse_accel_type(o.accel), scene);
     s->build_seconds = since(t0);
+    // Where load and build time and memory go, for big scenes (docs/performance.md).
+    const AccelStats as = s->accel->stats();
+    const GltfLoadStats& ls = load_stats;
+    char line[400];
+    std::snprintf(line, sizeof(line),
+                  "parse %.2f s (cpu %.2f), meshes %.2f (%.2f), materials %.2f (%.2f), nodes "
+                  "%.2f (%.2f); %s build %.2f s (cpu %.2f); %zu triangles in %s of meshes, "
+                  "%zu images, %s %s; peak memory %s",
+                  ls.parse.seconds, ls.parse.cpu_seconds, ls.meshes.seconds,
+                  ls.meshes.cpu_seconds, ls.materials.seconds, ls.materials.cpu_seconds,
+                  ls.nodes.seconds, ls.nodes.cpu_seconds, as.name.c_str(), s->build_seconds,
+                  double(std::clock() - build_cpu) / CLOCKS_PER_SEC, unique_triangle_count(scene),
+                  format_bytes(mesh_memory_bytes(scene)).c_str(), scene.images.size(),
+                  as.name.c_str(),
+                  format_bytes(as.memory_bytes).c_str(), format_bytes(peak_memory_bytes()).c_str());
+    LOG_INFO(path << ": load and build: " << line);
 
     apply_lens_options(o, path, s->width, s->height, *s->accel, s->camera_desc);
 

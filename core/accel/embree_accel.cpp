@@ -103,7 +103,13 @@ struct EmbreeAccel::Impl {
     }
 };
 
-EmbreeAccel::EmbreeAccel(const Scene& scene) : m_impl(std::make_unique<Impl>()) {
+EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
+    : m_impl(std::make_unique<Impl>()) {
+    const RTCBuildQuality quality =
+        options.quality == EmbreeBuildOptions::Quality::Low    ? RTC_BUILD_QUALITY_LOW
+        : options.quality == EmbreeBuildOptions::Quality::High ? RTC_BUILD_QUALITY_HIGH
+                                                                : RTC_BUILD_QUALITY_MEDIUM;
+    const int flags = RTC_SCENE_FLAG_ROBUST | (options.compact ? RTC_SCENE_FLAG_COMPACT : 0);
     const auto start = std::chrono::steady_clock::now();
     Impl& im = *m_impl;
     im.device = rtcNewDevice(nullptr);
@@ -120,16 +126,26 @@ EmbreeAccel::EmbreeAccel(const Scene& scene) : m_impl(std::make_unique<Impl>()) 
         // a closed 64k-triangle sphere, aimed at its vertices and edges, missed 521 times
         // in 6000 (tests/core/accel/bvh_accel_test.cpp, Watertight). ROBUST selects the
         // watertight Pluecker test and conservative traversal.
-        rtcSetSceneFlags(s, RTC_SCENE_FLAG_ROBUST);
+        rtcSetSceneFlags(s, RTCSceneFlags(flags));
+        rtcSetSceneBuildQuality(s, quality);
         im.object_scenes.push_back(s);
         for (uint32_t mesh_index : scene.objects[oi].meshes) {
             const TriangleMesh& mesh = scene.meshes[mesh_index];
             RTCGeometry g = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-            // Embree's own buffers are padded for its 16-byte vertex loads.
+            // The scene's arrays are shared, not copied, where they allow it: Embree reads
+            // the last vertex with a 16-byte load (rtcSetSharedGeometryBuffer(3)), so a
+            // vertex array needs a spare element of capacity (io/ reserves one). Other
+            // arrays are copied into Embree's own, padded buffers.
             auto set_vertices = [&](unsigned slot, const std::vector<Vec3>& p) {
+                if (p.capacity() > p.size()) {
+                    rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, slot, RTC_FORMAT_FLOAT3,
+                                               p.data(), 0, sizeof(Vec3), p.size());
+                    return;
+                }
                 auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
                     g, RTC_BUFFER_TYPE_VERTEX, slot, RTC_FORMAT_FLOAT3, sizeof(Vec3), p.size()));
                 std::memcpy(v, p.data(), p.size() * sizeof(Vec3));
+                m_copied_bytes += p.size() * sizeof(Vec3);
             };
             if (mesh.motion_positions.empty()) {
                 set_vertices(0, mesh.positions);
@@ -140,10 +156,10 @@ EmbreeAccel::EmbreeAccel(const Scene& scene) : m_impl(std::make_unique<Impl>()) 
                 rtcSetGeometryTimeStepCount(g, steps);
                 for (unsigned k = 0; k < steps; ++k) set_vertices(k, mesh.motion_positions[k]);
             }
-            auto* idx = static_cast<uint32_t*>(
-                rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                        3 * sizeof(uint32_t), mesh.triangle_count()));
-            std::memcpy(idx, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
+            // Index loads need no padding.
+            rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                       mesh.indices.data(), 0, 3 * sizeof(uint32_t),
+                                       mesh.triangle_count());
             rtcCommitGeometry(g);
             const uint32_t geom_id = rtcAttachGeometry(s, g);
             rtcReleaseGeometry(g);

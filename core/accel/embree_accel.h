@@ -1,6 +1,8 @@
 // Embree 3 traversal: one Embree scene per Object (each TriangleMesh a geometry), and a
 // top-level scene with one instance geometry per Instance. Embree types stay in the .cpp.
-// Moving instances and deforming meshes get Embree time steps; static ones none.
+// Moving instances and deforming meshes get Embree time steps; static ones none. Embree
+// reads the scene's index and (where padded) vertex arrays in place: the Scene must
+// outlive the accelerator and keep its meshes unchanged.
 #pragma once
 
 #include <memory>
@@ -10,11 +12,22 @@
 
 namespace penumbra {
 
+// How Embree builds its BVHs (rtcSetSceneBuildQuality, RTC_SCENE_FLAG_COMPACT); the
+// defaults are Embree's, measured against the others in docs/performance.md ("Big scenes").
+struct EmbreeBuildOptions {
+    enum class Quality { Low, Medium, High };
+    Quality quality = Quality::Medium;
+    bool compact = false;  // leaves index the vertex arrays: less memory, slower rays
+};
+
 class EmbreeAccel final : public Accel {
 public:
-    explicit EmbreeAccel(const Scene& scene);
+    explicit EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options = {});
     ~EmbreeAccel() override;
     AccelStats stats() const override { return m_stats; }
+    // Vertex bytes copied out of the Scene: positions without a spare element of
+    // capacity (0 when Embree reads every array in place).
+    size_t copied_bytes() const { return m_copied_bytes; }
 
 protected:
     std::optional<Hit> do_intersect(const Ray& ray) const override;
@@ -24,6 +37,7 @@ private:
     struct Impl;
     std::unique_ptr<Impl> m_impl;
     AccelStats m_stats;
+    size_t m_copied_bytes = 0;
 };
 
 // The transform Embree itself computes at time u for an instance with these time steps

@@ -1,6 +1,7 @@
 // Out-of-spec but renderable data gets one summary warning per kind and file, with a
 // count and an example: properties animated by several animations (Fox.glb), channels
-// without a target node, skin weights that do not sum to one. --strict makes each an error.
+// without a target node, skin weights that do not sum to one, nodes hidden by a zero scale,
+// instanced deformed meshes. --strict makes each an error. (Mesh data: gltf_mesh_checks_test.)
 #include <gtest/gtest.h>
 
 #include "core/error.h"
@@ -134,6 +135,59 @@ TEST(GltfSummaryWarnings, UnnormalizedSkinWeightsAreOneWarningPerFile) {
               std::string::npos)
         << log;
     EXPECT_EQ(strict_error(path).rfind(path + ": skins: the skin weights of 2 vertices", 0), 0u);
+}
+
+// Zero scale hides a subtree (valid glTF): four such nodes, one of them a child of
+// another, are one warning naming the three whose subtrees are skipped.
+TEST(GltfSummaryWarnings, SingularNodesAreOneWarning) {
+    const test::ScratchDir dir;
+    test::GltfBuilder b;
+    b.add<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
+    const std::string zero = "\"mesh\":0,\"scale\":[0,0,0]";
+    const std::string path = b.write(
+        dir, "hidden.gltf",
+        "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}],\"nodes\":[{" +
+            zero + ",\"children\":[3]},{" + zero + "},{\"mesh\":0},{" + zero + "},{" + zero +
+            "}],\"scenes\":[{\"nodes\":[0,1,2,4]}]",
+        test::BufferStorage::DataUri);
+    Scene s;
+    testing::internal::CaptureStderr();
+    s = load_gltf(path);
+    const std::string log = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(count(log, "warning: "), 1u) << log;
+    EXPECT_NE(log.find(path + ": nodes: 3 node(s) have a singular transform (zero scale?) at a "
+                              "time step; their subtrees are skipped (nodes[0], nodes[1], "
+                              "nodes[4])\n"),
+              std::string::npos)
+        << log;
+    EXPECT_EQ(s.instances.size(), 1u);
+    EXPECT_EQ(strict_error(path).rfind(path + ": nodes: 3 node(s) have a singular", 0), 0u);
+}
+
+// A morphed mesh (weight 1 on its one target) placed by two nodes with
+// EXT_mesh_gpu_instancing: each draws one deformed copy; one warning for both.
+TEST(GltfSummaryWarnings, InstancedDeformedMeshesAreOneWarning) {
+    const test::ScratchDir dir;
+    test::GltfBuilder b;
+    b.add<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
+    b.add<float>({0, 0, 1, 0, 0, 1, 0, 0, 1}, test::kFloat, "VEC3");
+    b.add<float>({0, 0, 0, 5, 0, 0}, test::kFloat, "VEC3");
+    const std::string instanced =
+        "{\"mesh\":0,\"extensions\":{\"EXT_mesh_gpu_instancing\":{\"attributes\":"
+        "{\"TRANSLATION\":2}}}}";
+    const std::string path = b.write(
+        dir, "instanced_morph.gltf",
+        "\"extensionsUsed\":[\"EXT_mesh_gpu_instancing\"],\"meshes\":[{\"primitives\":[{"
+        "\"attributes\":{\"POSITION\":0},\"targets\":[{\"POSITION\":1}]}],\"weights\":[1]}],"
+        "\"nodes\":[" + instanced + "," + instanced + "],\"scenes\":[{\"nodes\":[0,1]}]",
+        test::BufferStorage::DataUri);
+    const std::string log = warnings_of(path);
+    EXPECT_EQ(count(log, "warning: "), 1u) << log;
+    EXPECT_NE(log.find(path + ": nodes: 2 node(s) use EXT_mesh_gpu_instancing on a skinned or "
+                              "morphed mesh: one deformed copy is drawn, at the node (nodes[0], "
+                              "nodes[1])\n"),
+              std::string::npos)
+        << log;
 }
 
 }  // namespace

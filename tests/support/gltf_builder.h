@@ -5,11 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace penumbra::test {
@@ -57,10 +60,16 @@ constexpr int kByte = 5120, kUByte = 5121, kShort = 5122, kUShort = 5123, kUInt 
 class GltfBuilder {
 public:
     // Appends `values` as a new bufferView and accessor; returns the accessor index.
-    // `extra` is spliced into the accessor's JSON (e.g. "\"normalized\":true").
+    // `extra` is spliced into the accessor's JSON (e.g. "\"normalized\":true"). Float VEC3
+    // accessors get the min and max glTF requires of POSITION unless `extra` gives its
+    // own or is sparse (whose values the dense data do not show).
     template <typename T>
     int add(const std::vector<T>& values, int component_type, const std::string& type,
-            const std::string& extra = "") {
+            std::string extra = "") {
+        if constexpr (std::is_same_v<T, float>)
+            if (type == "VEC3" && !values.empty() && extra.find("\"min\"") == std::string::npos &&
+                extra.find("\"sparse\"") == std::string::npos)
+                extra += (extra.empty() ? "" : ",") + vec3_bounds(values);
         while (m_buffer.size() % 4) m_buffer.push_back(0);
         const size_t offset = m_buffer.size(), bytes = values.size() * sizeof(T);
         m_buffer.resize(offset + bytes);
@@ -151,6 +160,23 @@ public:
     }
 
 private:
+    static std::string vec3_bounds(const std::vector<float>& v) {
+        float lo[3], hi[3];
+        for (int c = 0; c < 3; ++c) lo[c] = hi[c] = v[size_t(c)];
+        for (size_t i = 0; i + 2 < v.size(); i += 3)
+            for (int c = 0; c < 3; ++c) {
+                lo[c] = std::min(lo[c], v[i + size_t(c)]);
+                hi[c] = std::max(hi[c], v[i + size_t(c)]);
+            }
+        // max_digits10, so that the bounds read back exactly.
+        auto list = [](const float* x) {
+            std::ostringstream s;
+            s.precision(9);
+            s << "[" << x[0] << "," << x[1] << "," << x[2] << "]";
+            return s.str();
+        };
+        return "\"min\":" + list(lo) + ",\"max\":" + list(hi);
+    }
     static std::string join(const std::vector<std::string>& v) {
         std::string s;
         for (size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + v[i];
