@@ -23,6 +23,9 @@ if [ "${1:-}" = "--test" ]; then
         # tests/apps/blender_roundtrip_test.cpp); its glTF importer needs numpy
         # (scripts/crosscheck/).
         blender blender-data python3-numpy
+        # Embree's pathtracer tutorial and its Cornell box (scripts/crosscheck/efficiency.py
+        # --embree).
+        embree-tools
     )
 fi
 

@@ -1,10 +1,9 @@
 // scripts/make_many_lights.py: its 10,000 emissive triangles load and render as the scene's
 // only lighting (the count and determinism are checked in
 // tests/scripts/crosscheck/efficiency_metrics_test.py).
-#include <gtest/gtest.h>
-
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <string>
@@ -19,8 +18,8 @@ namespace {
 TEST(MakeManyLights, TenThousandEmittersLightTheSceneAtOneSpp) {
     const test::ScratchDir dir;
     const std::string scene = dir.file("many-lights.gltf");
-    const std::string cmd = "python3 '" + test::source_path("scripts/make_many_lights.py") +
-                            "' '" + scene + "'";
+    const std::string cmd =
+        "python3 '" + test::source_path("scripts/make_many_lights.py") + "' '" + scene + "'";
     ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
     const std::string exr = dir.file("many-lights.exr");
     const test::CliResult r = test::run_penumbra(
