@@ -11,9 +11,7 @@ uint32_t adaptive_min_spp(double target_error) {
     return (m + 1) & ~1u;
 }
 
-uint32_t adaptive_step(uint32_t done) {
-    return std::max<uint32_t>(16, (done / 4 + 1) & ~1u);
-}
+uint32_t adaptive_step(uint32_t done) { return std::max<uint32_t>(16, (done / 4 + 1) & ~1u); }
 
 size_t update_active_pixels(const Film& film, double target_error, std::vector<uint8_t>& active) {
     const int w = film.width(), h = film.height();

@@ -124,8 +124,8 @@ Calibration calibrate(const Film& film) {
 // (0.64) fails. One pixel's t(1) interval is valid but
 // conservative here (98-99%): a firefly in one half widens |A - B| as much as the error.
 TEST(AdaptiveRenderLong, ErrorEstimateIsCalibratedForEverySampler) {
-    for (SamplerType type : {SamplerType::Independent, SamplerType::Stratified,
-                             SamplerType::Sobol}) {
+    for (SamplerType type :
+         {SamplerType::Independent, SamplerType::Stratified, SamplerType::Sobol}) {
         RenderOptions opt;
         opt.spp = 64;
         opt.seed = 3;
@@ -155,7 +155,7 @@ TEST(AdaptiveRenderLong, MeetsItsTargetWithLittleBiasAndDeterministically) {
     const Image spp = film.resolve_aov(Aov::Samples);
     const auto [lo, hi] = std::minmax_element(spp.pixels.begin(), spp.pixels.end());
     EXPECT_GE(*lo, float(adaptive_min_spp(opt.target_error)));
-    EXPECT_GT(*hi, 4 * *lo);  // pixels stopped at very different counts
+    EXPECT_GT(*hi, 4 * *lo);             // pixels stopped at very different counts
     EXPECT_EQ(stats.active_pixels, 0u);  // all converged within the budget
     double total = 0;
     for (float s : spp.pixels) total += s;
@@ -178,8 +178,7 @@ TEST(AdaptiveRenderLong, MeetsItsTargetWithLittleBiasAndDeterministically) {
         opt.tile_size = threads == 1 ? 16 : 5;
         const Film other = render_cornell(opt);
         const Image b = other.resolve();
-        EXPECT_EQ(0, std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * 4))
-            << threads;
+        EXPECT_EQ(0, std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * 4)) << threads;
         EXPECT_EQ(spp.pixels, other.resolve_aov(Aov::Samples).pixels) << threads;
         EXPECT_EQ(film.resolve_aov(Aov::Error).pixels, other.resolve_aov(Aov::Error).pixels);
     }

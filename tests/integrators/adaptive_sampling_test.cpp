@@ -10,10 +10,10 @@ namespace penumbra {
 namespace {
 
 TEST(AdaptiveSampling, MinimumAndStepAreEven) {
-    EXPECT_EQ(adaptive_min_spp(0.01), 64u);   // 16 / 0.01^0.3 = 63.7
-    EXPECT_EQ(adaptive_min_spp(0.1), 32u);    // 31.9
+    EXPECT_EQ(adaptive_min_spp(0.01), 64u);  // 16 / 0.01^0.3 = 63.7
+    EXPECT_EQ(adaptive_min_spp(0.1), 32u);   // 31.9
     EXPECT_EQ(adaptive_min_spp(1.0), 16u);
-    EXPECT_EQ(adaptive_min_spp(100.0), 8u);   // the floor
+    EXPECT_EQ(adaptive_min_spp(100.0), 8u);  // the floor
     for (double e : {0.003, 0.02, 0.05, 0.5}) EXPECT_EQ(adaptive_min_spp(e) % 2, 0u) << e;
     for (uint32_t done : {2u, 16u, 64u, 100u, 1000u, 4097u}) {
         EXPECT_EQ(adaptive_step(done) % 2, 0u) << done;

@@ -89,9 +89,10 @@ TEST(FireflyControl, RegularizationLeavesRoughScenesUnchanged) {
     glossy.roughness = 0.5f;
     scene.materials.push_back(glossy);
     const float s = 20;
-    test::add_instance(scene, test::add_quad_object(scene, {-s, 0, s}, {s, 0, s}, {s, 0, -s},
-                                                    {-s, 0, -s}, diffuse),
-                       Transform());
+    test::add_instance(
+        scene,
+        test::add_quad_object(scene, {-s, 0, s}, {s, 0, s}, {s, 0, -s}, {-s, 0, -s}, diffuse),
+        Transform());
     test::add_instance(scene, test::add_sphere_object(scene, 1),
                        Transform::trs({0, 1, 0}, Quat{0, 0, 0, 1}, {1, 1, 1}));
     scene.lights.push_back(
