@@ -34,7 +34,9 @@ bool render_samples(const RenderContext& ctx, const Camera& camera,
         make_sampler(options.sampler, std::max(options.spp, last), options.seed);
 
     const int ts = std::max(1, options.tile_size);
-    const int tiles_x = (w + ts - 1) / ts, tiles_y = (h + ts - 1) / ts;
+    const int row0 = std::clamp(options.row_begin, 0, h);
+    const int row1 = options.row_end > 0 ? std::clamp(options.row_end, row0, h) : h;
+    const int tiles_x = (w + ts - 1) / ts, tiles_y = (row1 - row0 + ts - 1) / ts;
     std::atomic<bool> abandoned{false};
 
     // AOVs get their own instantiation of the tile loop, so a render without them does
@@ -42,8 +44,8 @@ bool render_samples(const RenderContext& ctx, const Camera& camera,
     const bool first_hit = film.aovs().needs_first_hit();
     auto render_tile = [&](int tile, auto with_aovs) {
         std::unique_ptr<Sampler> sampler = prototype->clone();
-        const int x0 = (tile % tiles_x) * ts, y0 = (tile / tiles_x) * ts;
-        const int x1 = std::min(x0 + ts, w), y1 = std::min(y0 + ts, h);
+        const int x0 = (tile % tiles_x) * ts, y0 = row0 + (tile / tiles_x) * ts;
+        const int x1 = std::min(x0 + ts, w), y1 = std::min(y0 + ts, row1);
         for (int y = y0; y < y1; ++y) {
             // A second Ctrl-C should not wait for the pass: check once per row.
             if (abandon(options)) {
@@ -114,10 +116,13 @@ Film render(const RenderContext& ctx, const Camera& camera, const Integrator& in
             const RenderOptions& options, RenderStats* stats) {
     const Accel& accel = ctx.accel;
     const int w = camera.width(), h = camera.height();
-    Film film(w, h, options.aovs);
+    Film film = options.resume ? *options.resume : Film(w, h, options.aovs);
+    const uint32_t resumed = options.resume ? std::min(options.resume_spp, options.spp) : 0;
+    const int rows = (options.row_end > 0 ? std::min(options.row_end, h) : h) -
+                     std::clamp(options.row_begin, 0, h);
     const uint64_t rays_before = accel.rays_traced();
-    ProgressReporter progress(options.label, uint64_t(w) * h * options.spp, "samples",
-                              options.progress, options.batch);
+    ProgressReporter progress(options.label, uint64_t(w) * rows * (options.spp - resumed),
+                              "samples", options.progress, options.batch);
     if (options.time_limit > 0) progress.set_time_limit(options.time_limit);
 
     const auto start = std::chrono::steady_clock::now();
@@ -125,8 +130,12 @@ Film render(const RenderContext& ctx, const Camera& camera, const Integrator& in
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
     RenderStats s;
-    while (const uint32_t n = next_pass_samples(s.spp, options.spp, elapsed(),
-                                                options.time_limit)) {
+    s.spp = resumed;
+    double last_checkpoint = 0;
+    // Passes are planned from this run's own pace: a resumed render starts with short
+    // passes again, so an early interrupt is honoured soon.
+    while (const uint32_t n = next_pass_samples(s.spp - resumed, options.spp - resumed,
+                                                elapsed(), options.time_limit)) {
         if (options.interrupts && options.interrupts->load() >= 1) {
             s.interrupted = true;
             break;
@@ -140,6 +149,11 @@ Film render(const RenderContext& ctx, const Camera& camera, const Integrator& in
         ++s.passes;
         // Between passes no thread traces, so summing the per-thread counters is safe.
         progress.set_rays(accel.rays_traced() - rays_before);
+        if (options.checkpoint && s.spp < options.spp &&
+            elapsed() - last_checkpoint >= options.checkpoint_interval) {
+            options.checkpoint(film, s.spp);
+            last_checkpoint = elapsed();
+        }
     }
     if (options.interrupts && options.interrupts->load() >= 1 && s.spp < options.spp)
         s.interrupted = true;
@@ -147,7 +161,7 @@ Film render(const RenderContext& ctx, const Camera& camera, const Integrator& in
 
     s.seconds = elapsed();
     s.rays = accel.rays_traced() - rays_before;
-    s.camera_samples = uint64_t(w) * h * s.spp;
+    s.camera_samples = uint64_t(w) * rows * (s.spp - resumed);
     s.nonfinite_samples = film.nonfinite_samples();
     if (stats) *stats = s;
     return film;

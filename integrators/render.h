@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "core/camera/camera.h"
@@ -40,6 +41,18 @@ struct RenderOptions {
     // AOVs to accumulate besides the beauty (the film render() returns has them). The
     // first-hit ones cost one more camera ray per sample; rays traced include it.
     AovSet aovs;
+    // Only rows [row_begin, row_end) are rendered (a farm band); row_end 0: to the last.
+    // With filter importance sampling a sample only touches its own pixel, so a band's
+    // rows equal those of the whole image bit for bit.
+    int row_begin = 0, row_end = 0;
+    // Continue a render: `resume` holds samples [0, resume_spp) of every pixel (a
+    // checkpoint), and render() adds [resume_spp, spp).
+    const Film* resume = nullptr;
+    uint32_t resume_spp = 0;
+    // Called between passes, at most every checkpoint_interval seconds, with the film and
+    // the samples per pixel it holds (to write a checkpoint). Empty: never.
+    std::function<void(const Film&, uint32_t spp)> checkpoint;
+    double checkpoint_interval = 300;
 };
 
 struct RenderStats {
@@ -47,7 +60,7 @@ struct RenderStats {
     uint64_t rays = 0;
     uint64_t camera_samples = 0;
     uint64_t nonfinite_samples = 0;
-    uint32_t spp = 0;          // samples per pixel actually rendered
+    uint32_t spp = 0;          // samples per pixel in the film (resumed ones included)
     int passes = 0;
     bool interrupted = false;  // stopped by a user interrupt before options.spp
     bool aborted = false;      // second interrupt: the last pass is incomplete
