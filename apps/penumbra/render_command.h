@@ -64,6 +64,10 @@ struct RenderCommandOptions {
     std::string compression = "zip";
     std::string reference;            // EXR to measure MSE and relMSE against
     bool timing_metadata = false;     // render time in the header (not reproducible)
+    // Checkpoints (io/checkpoint.h): written on an interrupt and every this many seconds
+    // between passes; 0: only on an interrupt.
+    double checkpoint_interval = 300;
+    int bands = 1;  // the job key "bands": row bands per image on the farm
 };
 
 void add_render_command(CLI::App& app, RenderCommandOptions& options);
@@ -71,5 +75,12 @@ void add_render_command(CLI::App& app, RenderCommandOptions& options);
 // the exit status: 0 when all rendered or were skipped, 1 if any failed, 130 after
 // Ctrl-C.
 int run_render_command(const RenderCommandOptions& options);
+
+struct BatchJob;
+struct JobResult;
+// Renders the given jobs of a batch (as run_render_command does after planning it) and
+// returns the exit status: 0, 1 if any failed, 128 + the signal after an interrupt.
+int run_render_jobs(const std::vector<BatchJob>& jobs, const RenderCommandOptions& options,
+                    std::vector<JobResult>& results);
 
 }  // namespace penumbra
