@@ -23,6 +23,8 @@ if [ "${1:-}" = "--test" ]; then
         # tests/apps/blender_roundtrip_test.cpp); its glTF importer needs numpy
         # (scripts/crosscheck/).
         blender blender-data python3-numpy
+        # A single-node Slurm cluster for the farm test (tests/farm/run_slurm_test.sh).
+        slurm-wlm munge
     )
 fi
 
