@@ -38,6 +38,7 @@ void apply(const JobSettings& s, RenderCommandOptions& o) {
     if (s.height) o.height = *s.height;
     if (s.max_depth) o.max_depth = *s.max_depth;
     if (s.bands) o.bands = *s.bands;
+    if (s.frames_per_task) o.frames_per_task = *s.frames_per_task;
     if (s.spp) o.spp = *s.spp;
     if (s.seed) o.seed = *s.seed;
     if (s.time_limit) o.time_limit = *s.time_limit;

@@ -34,20 +34,21 @@ CLI::App* add_farm_command(CLI::App& app, FarmOptions& o) {
     submit->add_option("--partition", o.partition, "Slurm partition");
     submit->add_option("--cpus-per-task", o.cpus_per_task, "CPUs per task (sbatch -c)")
         ->check(CLI::PositiveNumber);
-    submit->add_option("--max-running", o.max_running,
-                       "At most this many tasks at once (the array's %K)")
+    submit
+        ->add_option("--max-running", o.max_running,
+                     "At most this many tasks at once (the array's %K)")
         ->check(CLI::PositiveNumber);
     submit->add_option("--sbatch-args", o.sbatch_args,
                        "More sbatch options for every job, e.g. \"--time=1:00:00 --mem=8G\"");
-    submit->add_option("--checkpoint-interval", o.checkpoint_interval,
-                       "Seconds between a task's checkpoints (a requeued task continues "
-                       "from its last one)")
+    submit
+        ->add_option("--checkpoint-interval", o.checkpoint_interval,
+                     "Seconds between a task's checkpoints (a requeued task continues "
+                     "from its last one)")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
     submit->add_flag("--wait", o.wait,
                      "Wait for the merge, print the summary; exit 1 if an image failed");
-    CLI::App* status =
-        farm->add_subcommand("status", "Show a submitted job file's progress");
+    CLI::App* status = farm->add_subcommand("status", "Show a submitted job file's progress");
     status->add_option("job", o.job_file, "JSON job file")->required();
     CLI::App* task = farm->add_subcommand("task", "Render one work item (run by Slurm)");
     task->add_option("job", o.job_file, "JSON job file")->required()->check(CLI::ExistingFile);
@@ -68,8 +69,7 @@ int task_cpus() {
     for (const char* var : {"SLURM_CPUS_PER_TASK", "SLURM_CPUS_ON_NODE"})
         if (const char* v = std::getenv(var); v && std::atoi(v) > 0) return std::atoi(v);
     cpu_set_t set;
-    if (sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0)
-        return CPU_COUNT(&set);
+    if (sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0) return CPU_COUNT(&set);
     return 0;
 }
 
@@ -139,7 +139,8 @@ int run_submit(const FarmOptions& o) {
         args.push_back("--signal=B:TERM@120");
         args.push_back("--open-mode=append");
         args.push_back("--output=" + dir + "/logs/task-%A_%a.log");
-        if (o.cpus_per_task > 0) args.push_back("--cpus-per-task=" + std::to_string(o.cpus_per_task));
+        if (o.cpus_per_task > 0)
+            args.push_back("--cpus-per-task=" + std::to_string(o.cpus_per_task));
         args.insert(args.end(), extra.begin(), extra.end());
         const std::string id = sbatch(args, dir + "/task.sh", {std::to_string(first)});
         ids.push_back(id);
@@ -174,7 +175,8 @@ int run_submit(const FarmOptions& o) {
 int run_status(const FarmOptions& o) {
     const std::string dir = farm_dir(o.job_file);
     const std::string jobs_txt = read_text(dir + "/jobs.txt");
-    if (jobs_txt.empty()) throw SceneError(o.job_file + ": not submitted (no " + dir + "/jobs.txt)");
+    if (jobs_txt.empty())
+        throw SceneError(o.job_file + ": not submitted (no " + dir + "/jobs.txt)");
     std::vector<std::string> ids;
     std::istringstream lines(jobs_txt);
     for (std::string kind, id, rest; lines >> kind >> id;) {
@@ -188,7 +190,7 @@ int run_status(const FarmOptions& o) {
         const auto rec = read_task_record(task_record_path(dir, i));
         if (!rec) continue;
         ++done;
-        failed += rec->result.status == JobStatus::Failed;
+        for (const JobResult& r : rec->results) failed += r.status == JobStatus::Failed;
     }
     std::printf("%zu of %zu work items finished (%zu failed), %zu images\n", done,
                 plan.items.size(), failed, plan.jobs.size());
@@ -213,25 +215,29 @@ int run_task(const FarmOptions& o) {
         // The plan submit wrote down must be the one computed now.
         const std::string submitted = read_text(dir + "/plan.txt");
         if (!submitted.empty() && submitted != plan_text(plan.jobs, plan.items))
-            throw SceneError(o.job_file + ": changed since it was submitted (its work items "
-                             "differ from " + dir + "/plan.txt); submit it again");
+            throw SceneError(o.job_file +
+                             ": changed since it was submitted (its work items "
+                             "differ from " +
+                             dir + "/plan.txt); submit it again");
         if (item >= plan.items.size())
             throw SceneError(o.job_file + ": work item " + std::to_string(item) +
-                             " does not exist (the plan has " +
-                             std::to_string(plan.items.size()) + ")");
-        BatchJob job = plan.jobs[plan.items[item].job];
-        job.band = plan.items[item].band;
-        std::vector<JobResult> results;
-        status = run_render_jobs({job}, plan.options, results);
-        rec.result = results.at(0);
-        rec.band = job.band;
-        rec.bands = job.options.bands;
-        if (job.band >= 0 && !rec.result.output.empty())
-            rec.band_file = band_output_path(rec.result.output, job.band, job.options.bands);
+                             " does not exist (the plan has " + std::to_string(plan.items.size()) +
+                             ")");
+        const WorkItem& work = plan.items[item];
+        std::vector<BatchJob> jobs(plan.jobs.begin() + long(work.job),
+                                   plan.jobs.begin() + long(work.job + work.count));
+        for (BatchJob& job : jobs) job.band = work.band;
+        status = run_render_jobs(jobs, plan.options, rec.results);
+        rec.band = work.band;
+        rec.bands = jobs[0].options.bands;
+        if (work.band >= 0 && !rec.results.at(0).output.empty())
+            rec.band_file = band_output_path(rec.results[0].output, work.band, rec.bands);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "error: %s\n", e.what());
-        rec.result.status = JobStatus::Failed;
-        rec.result.message = e.what();
+        JobResult failed;
+        failed.status = JobStatus::Failed;
+        failed.message = e.what();
+        rec.results = {failed};
     }
     write_task_record(task_record_path(dir, item), rec);
     return status;

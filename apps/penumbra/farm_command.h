@@ -3,9 +3,8 @@
 // assembly of bands and the batch summary once all tasks ended (merge).
 #pragma once
 
-#include <string>
-
 #include <CLI/CLI.hpp>
+#include <string>
 
 namespace penumbra {
 

@@ -24,9 +24,9 @@ std::string band_name(int band, int bands) {
 // Merges the bands of one image whose tasks all rendered (or skipped) their band.
 void merge_image(const BatchJob& job, const std::vector<TaskRecord>& bands, JobResult& r) {
     const int n = job.options.bands;
-    r.output = bands[0].result.output;
+    r.output = bands[0].results.at(0).output;
     bool all_skipped = true;
-    for (const TaskRecord& b : bands) all_skipped &= b.result.status == JobStatus::Skipped;
+    for (const TaskRecord& b : bands) all_skipped &= b.results[0].status == JobStatus::Skipped;
     if (all_skipped && fs::exists(r.output) && is_finished_render(r.output)) {
         r.status = JobStatus::Skipped;
         r.message = "exists (--overwrite renders it again)";
@@ -48,10 +48,11 @@ void merge_image(const BatchJob& job, const std::vector<TaskRecord>& bands, JobR
         if (fs::exists(preview)) png.push_back({preview, row0, row1});
         rays += std::stoull(image_attribute(file, "penumbra:rays", "0"));
         nonfinite += std::stoull(image_attribute(file, "penumbra:nonfinite_samples", "0"));
-        spp = std::min<uint32_t>(spp, uint32_t(std::stoul(image_attribute(file, "penumbra:spp", "0"))));
+        spp = std::min<uint32_t>(spp,
+                                 uint32_t(std::stoul(image_attribute(file, "penumbra:spp", "0"))));
         partial |= image_attribute(file, "penumbra:partial", "0") == "1";
-        r.seconds += bands[size_t(b)].result.seconds;
-        r.peak_memory = std::max(r.peak_memory, bands[size_t(b)].result.peak_memory);
+        r.seconds += bands[size_t(b)].results[0].seconds;
+        r.peak_memory = std::max(r.peak_memory, bands[size_t(b)].results[0].peak_memory);
     }
     // The header as one machine writes it: these are the only values that differ by band.
     merge_bands(exr, r.output,
@@ -84,27 +85,41 @@ int run_farm_merge(const std::string& job_file, double checkpoint_interval) {
         results[j].frame = plan.jobs[j].options.timeline.frame.value_or(-1);
     }
     std::vector<std::string> problems(plan.jobs.size());
+    auto problem = [&](size_t job, const std::string& what) {
+        problems[job] += (problems[job].empty() ? "" : "; ") + what;
+    };
     for (size_t i = 0; i < plan.items.size(); ++i) {
         const WorkItem& item = plan.items[i];
         const BatchJob& job = plan.jobs[item.job];
         const std::string where =
             item.band < 0 ? "" : band_name(item.band, job.options.bands) + ": ";
         const auto rec = read_task_record(task_record_path(dir, i));
-        if (!rec) {
-            problems[item.job] += where + "task " + std::to_string(i) +
-                                  " left no result (killed? see " + dir + "/logs/)";
+        if (!rec || rec->results.empty()) {
+            for (size_t k = 0; k < item.count; ++k)
+                problem(item.job + k, where + "task " + std::to_string(i) +
+                                          " left no result (killed? see " + dir + "/logs/)");
             continue;
         }
-        if (rec->result.status == JobStatus::Failed)
-            problems[item.job] += (problems[item.job].empty() ? "" : "; ") + where +
-                                  rec->result.message;
-        if (item.band < 0) {
-            const JobResult planned = results[item.job];
-            results[item.job] = rec->result;
-            results[item.job].scene = planned.scene;
-            results[item.job].frame = planned.frame;
-        } else {
+        if (item.band >= 0) {
+            if (rec->results[0].status == JobStatus::Failed)
+                problem(item.job, where + rec->results[0].message);
             bands[item.job].push_back(*rec);
+            continue;
+        }
+        for (size_t k = 0; k < item.count; ++k) {
+            const size_t j = item.job + k;
+            if (k >= rec->results.size()) {
+                problem(j, "task " + std::to_string(i) + " left no result for this frame");
+                continue;
+            }
+            JobResult r = rec->results[k];
+            r.scene = results[j].scene;
+            r.frame = results[j].frame;
+            if (r.status == JobStatus::Failed) problem(j, r.message);
+            // A frame the task never started (it was stopped before) is not done.
+            if (r.status == JobStatus::Skipped && !fs::exists(r.output))
+                problem(j, "not rendered: " + r.message);
+            results[j] = r;
         }
     }
     for (size_t j = 0; j < plan.jobs.size(); ++j) {

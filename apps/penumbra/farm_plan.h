@@ -16,8 +16,9 @@
 namespace penumbra {
 
 struct WorkItem {
-    size_t job = 0;  // index into the batch (plan_batch)
-    int band = -1;   // row band of the job's options.bands; -1: the whole image
+    size_t job = 0;    // index into the batch (plan_batch)
+    int band = -1;     // row band of the job's options.bands; -1: the whole image
+    size_t count = 1;  // whole images: jobs [job, job + count), frames of one entry
 };
 
 // A job file's batch as the farm renders it: render's default options with the job file
@@ -30,7 +31,8 @@ struct FarmPlan {
 // Throws SceneError for a bad job file, before anything is submitted or rendered.
 FarmPlan load_farm_plan(const std::string& job_file, double checkpoint_interval);
 
-// Jobs in batch order; a job with bands > 1 gives one item per band, in row order.
+// Jobs in batch order; a job with bands > 1 gives one item per band, in row order; up to
+// frames_per_task consecutive frames of one entry share an item.
 std::vector<WorkItem> plan_work(const std::vector<BatchJob>& jobs);
 // One line per item: "index job band/bands frame scene", for plan.txt and its check.
 std::string plan_text(const std::vector<BatchJob>& jobs, const std::vector<WorkItem>& items);
@@ -44,13 +46,13 @@ std::vector<std::pair<size_t, size_t>> array_chunks(size_t n, size_t max_array_s
 std::string farm_dir(const std::string& job_file);
 std::string task_record_path(const std::string& dir, size_t item);
 
-// What a task leaves for the merge: its image's result and, for a band, its file (the
+// What a task leaves for the merge: its images' results and, for a band, its file (the
 // band's rows follow from the file's height: band_rows).
 struct TaskRecord {
     size_t item = 0;
-    JobResult result;
+    std::vector<JobResult> results;  // one per image of the item, in batch order
     int band = -1, bands = 1;
-    std::string band_file;  // band_output_path of result.output
+    std::string band_file;  // band_output_path of the image's output
     std::string host;
     int restarts = 0;  // SLURM_RESTART_COUNT: how often Slurm requeued the task
 };

@@ -83,8 +83,8 @@ std::string queue_report(const std::vector<std::string>& job_ids) {
     std::string ids;
     for (const std::string& id : job_ids) ids += (ids.empty() ? "" : ",") + id;
     std::string out = run_command({"squeue", "-j", ids, "-o", "%.18i %.9T %.10M %.20R"}).text;
-    const CommandOutput acct = run_command(
-        {"sacct", "-X", "-j", ids, "--format=JobID%20,State,Elapsed,ExitCode,MaxRSS"});
+    const CommandOutput acct =
+        run_command({"sacct", "-X", "-j", ids, "--format=JobID%20,State,Elapsed,ExitCode,MaxRSS"});
     if (acct.status == 0) out += acct.text;
     return out;
 }

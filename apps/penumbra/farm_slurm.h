@@ -8,7 +8,7 @@
 namespace penumbra {
 
 struct CommandOutput {
-    int status = -1;  // exit status; -1: could not start
+    int status = -1;   // exit status; -1: could not start
     std::string text;  // stdout and stderr together
 };
 

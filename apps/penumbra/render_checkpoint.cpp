@@ -33,17 +33,16 @@ std::string render_fingerprint(const BatchJob& job, const SceneSetup& setup,
     f << "penumbra-checkpoint-v1 scene=" << job.scene << " bytes=" << file_hash(job.scene)
       << " size=" << setup.width << "x" << setup.height << " rows=" << ropt.row_begin << "-"
       << ropt.row_end << " spp=" << o.spp << " seed=" << o.seed << " sampler=" << o.sampler
-      << " filter=" << o.filter << " integrator=" << o.integrator
-      << " strategy=" << o.strategy << " microfacet=" << o.microfacet
-      << " layering=" << o.gltf_layering << " light_samples=" << o.light_samples
-      << " bsdf_samples=" << o.bsdf_samples << " max_depth=" << o.max_depth
-      << " accel=" << o.accel << " camera=" << o.camera << " variant=" << o.variant
-      << " env=" << o.env << " env_intensity=" << o.env_intensity
+      << " filter=" << o.filter << " integrator=" << o.integrator << " strategy=" << o.strategy
+      << " microfacet=" << o.microfacet << " layering=" << o.gltf_layering
+      << " light_samples=" << o.light_samples << " bsdf_samples=" << o.bsdf_samples
+      << " max_depth=" << o.max_depth << " accel=" << o.accel << " camera=" << o.camera
+      << " variant=" << o.variant << " env=" << o.env << " env_intensity=" << o.env_intensity
       << " env_rotation=" << o.env_rotation << " default_light=" << o.default_light
       << " light_units=" << o.light_units << " fstop=" << o.fstop
       << " aperture_radius=" << o.aperture_radius << " focus_distance=" << o.focus_distance
-      << " aperture_blades=" << o.aperture_blades << " shutter=" << setup.scene.shutter_open
-      << "-" << setup.scene.shutter_close << " time=" << ropt.time << " aovs=" << o.aovs
+      << " aperture_blades=" << o.aperture_blades << " shutter=" << setup.scene.shutter_open << "-"
+      << setup.scene.shutter_close << " time=" << ropt.time << " aovs=" << o.aovs
       << " strict=" << o.strict << " max_texture_pixels=" << o.max_texture_pixels
       << " ocio=" << o.color.config << " working_space=" << o.color.working_space;
     for (float c : o.env_color) f << " env_color=" << c;

@@ -68,6 +68,7 @@ struct RenderCommandOptions {
     // between passes; 0: only on an interrupt.
     double checkpoint_interval = 300;
     int bands = 1;  // the job key "bands": row bands per image on the farm
+    int frames_per_task = 1;  // the job key "frames_per_task": frames per farm task
 };
 
 void add_render_command(CLI::App& app, RenderCommandOptions& options);

@@ -3,9 +3,8 @@
 // uninterrupted render; kill -9 loses only the work since the last timed checkpoint; a
 // stale checkpoint is not resumed; and `farm task` for every work item plus `farm merge`
 // writes images (banded or not, AOVs, half) with the pixels of `render --job`.
-#include <gtest/gtest.h>
-
 #include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 
 #include <chrono>
@@ -86,8 +85,9 @@ std::map<std::string, std::string> header(const std::string& exr) {
 // A render of the Cornell box that takes a second or two: a SIGTERM soon after it
 // starts lands well before its last pass.
 std::vector<std::string> cornell_render(const std::string& out, const std::string& spp) {
-    return {"render", kCornell, "-o", out, "--width", "32", "--spp", spp, "--aov",
-            "albedo,depth,variance,samples", "--no-preview"};
+    return {"render",      kCornell, "-o", out,     "--width",
+            "32",          "--spp",  spp,  "--aov", "albedo,depth,variance,samples",
+            "--no-preview"};
 }
 
 TEST(FarmCli, SigtermCheckpointsAndTheSameCommandFinishesBitwise) {
@@ -156,8 +156,8 @@ TEST(FarmCli, ACheckpointOfOtherOptionsIsNotResumed) {
               std::string::npos)
         << r.output;
     EXPECT_EQ(r.output.find("resuming"), std::string::npos) << r.output;
-    EXPECT_TRUE(same_pixels(out, (run_penumbra(cornell_render(dir.file("ref.exr"), "8")),
-                                  dir.file("ref.exr"))));
+    EXPECT_TRUE(same_pixels(
+        out, (run_penumbra(cornell_render(dir.file("ref.exr"), "8")), dir.file("ref.exr"))));
 }
 
 // A job file: a banded image with AOVs, a banded half-float image, a broken scene, an
@@ -166,13 +166,15 @@ std::string job_file(const test::ScratchDir& dir, const std::string& name,
                      const std::string& out_dir) {
     dir.write("broken.gltf", "{\"asset\": ");
     return dir.write(name, R"({
-  "defaults": {"width": 24, "spp": 3, "out_dir": ")" + out_dir + R"("},
+  "defaults": {"width": 24, "spp": 3, "out_dir": ")" +
+                               out_dir + R"("},
   "jobs": [
     {"scene": ")" + kCornell + R"(", "bands": 3, "name": "banded.exr",
      "aov": "albedo,normal,depth,position,variance,samples"},
     {"scene": ")" + kBox + R"(", "bands": 5, "half": true, "name": "box_half.exr"},
     {"scene": "broken.gltf"},
-    {"scene": ")" + kCornell + R"(", "name": "frame_{frame}.exr", "frames": "1-2"}
+    {"scene": ")" + kCornell + R"(", "name": "frame_{frame}.exr", "frames": "1-3",
+     "frames_per_task": 2}
   ]
 })");
 }
@@ -183,7 +185,8 @@ TEST(FarmCli, TasksAndMergeWriteTheImagesOfRenderJob) {
     const std::string farm_job = job_file(dir, "farm.json", "farm");
     const test::CliResult ref = run_penumbra({"render", "--job", ref_job, "-q"});
     EXPECT_EQ(ref.status, 1) << ref.output;  // the broken scene
-    // 3 + 5 bands, the broken scene, 2 frames: 11 work items, run here one by one.
+    // 3 + 5 bands, the broken scene, 3 frames in 2 tasks: 11 work items, run here one by
+    // one.
     for (int i = 0; i < 11; ++i) {
         const test::CliResult t =
             run_penumbra({"farm", "task", farm_job, "--index", std::to_string(i)});
@@ -194,10 +197,9 @@ TEST(FarmCli, TasksAndMergeWriteTheImagesOfRenderJob) {
     EXPECT_EQ(m.status, 1) << m.output;
     EXPECT_TRUE(std::regex_search(m.output, std::regex("broken\\.gltf +- +failed .*broken\\.gltf")))
         << m.output;
-    EXPECT_NE(m.output.find("5 images: 4 ok, 0 partial, 1 failed"), std::string::npos)
-        << m.output;
+    EXPECT_NE(m.output.find("6 images: 5 ok, 0 partial, 1 failed"), std::string::npos) << m.output;
     for (const char* name : {"banded.exr", "banded.png", "box_half.exr", "box_half.png",
-                             "frame_0001.exr", "frame_0002.exr"}) {
+                             "frame_0001.exr", "frame_0002.exr", "frame_0003.exr"}) {
         EXPECT_TRUE(same_pixels(dir.file(std::string("ref/") + name),
                                 dir.file(std::string("farm/") + name)))
             << name;

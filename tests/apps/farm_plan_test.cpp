@@ -37,17 +37,39 @@ TEST(FarmPlan, WorkItemsArePureFunctionsOfTheJobFile) {
     EXPECT_NE(plan_text(a.jobs, a.items).find("7 job 4 band 4/4 frame - "), std::string::npos)
         << plan_text(a.jobs, a.items);
     // A changed job file gives another plan (the task's check against plan.txt).
-    const std::string changed = dir.write("job2.json", std::string(kJob).replace(
-                                                          std::string(kJob).find("\"bands\": 4"),
-                                                          10, "\"bands\": 3"));
+    const std::string changed = dir.write(
+        "job2.json",
+        std::string(kJob).replace(std::string(kJob).find("\"bands\": 4"), 10, "\"bands\": 3"));
     const FarmPlan c = load_farm_plan(changed, 300);
     EXPECT_EQ(c.items.size(), 11u);
 }
 
+TEST(FarmPlan, FramesPerTaskGroupsConsecutiveFramesOfOneEntry) {
+    const test::ScratchDir dir;
+    const std::string job = dir.write("job.json", R"({
+  "defaults": {"frames_per_task": 4},
+  "jobs": [
+    {"scene": "a.gltf", "frames": "1-10"},
+    {"scene": "a.gltf", "frames": "11-12"},
+    {"scene": "b.gltf", "frames": "1-3", "bands": 2},
+    {"scene": "c.gltf", "frames": "1-3", "frames_per_task": 1}
+  ]
+})");
+    const FarmPlan p = load_farm_plan(job, 300);
+    // a: 4 + 4 + 2 frames; the next entry starts its own item; bands never group; c: 1 each.
+    std::vector<std::pair<size_t, size_t>> got;  // (first job, count)
+    for (const WorkItem& w : p.items) got.push_back({w.job, w.count});
+    const std::vector<std::pair<size_t, size_t>> expected = {
+        {0, 4}, {4, 4}, {8, 2}, {10, 2}, {12, 1}, {12, 1}, {13, 1},
+        {13, 1}, {14, 1}, {14, 1}, {15, 1}, {16, 1}, {17, 1}};
+    EXPECT_EQ(got, expected);
+    EXPECT_NE(plan_text(p.jobs, p.items).find("0 job 0-3 band - frame 1-4 "), std::string::npos)
+        << plan_text(p.jobs, p.items);
+}
+
 TEST(FarmPlan, BadBandsAreNamed) {
     const test::ScratchDir dir;
-    const std::string job =
-        dir.write("job.json", R"({"jobs": [{"scene": "a.gltf", "bands": 0}]})");
+    const std::string job = dir.write("job.json", R"({"jobs": [{"scene": "a.gltf", "bands": 0}]})");
     try {
         load_farm_plan(job, 300);
         FAIL() << "bands 0 accepted";
@@ -89,15 +111,19 @@ TEST(FarmPlan, TaskRecordsRoundTrip) {
     const test::ScratchDir dir;
     TaskRecord rec;
     rec.item = 7;
-    rec.result.scene = "s.gltf";
-    rec.result.output = "out/s.exr";
-    rec.result.message = "a \"quoted\" error\nover two lines";
-    rec.result.frame = 12;
-    rec.result.status = JobStatus::Partial;
-    rec.result.seconds = 1.5;
-    rec.result.spp = 9;
-    rec.result.rays = 1ull << 40;
-    rec.result.peak_memory = 123456789;
+    JobResult r;
+    r.scene = "s.gltf";
+    r.output = "out/s.exr";
+    r.message = "a \"quoted\" error\nover two lines";
+    r.frame = 12;
+    r.status = JobStatus::Partial;
+    r.seconds = 1.5;
+    r.spp = 9;
+    r.rays = 1ull << 40;
+    r.peak_memory = 123456789;
+    rec.results = {r, r};
+    rec.results[1].frame = 13;
+    rec.results[1].status = JobStatus::Skipped;
     rec.band = 2;
     rec.bands = 4;
     rec.band_file = "out/s.band-3-of-4.exr";
@@ -108,18 +134,24 @@ TEST(FarmPlan, TaskRecordsRoundTrip) {
     const auto back = read_task_record(path);
     ASSERT_TRUE(back);
     EXPECT_EQ(back->item, 7u);
-    EXPECT_EQ(back->result.message, rec.result.message);
-    EXPECT_EQ(back->result.status, JobStatus::Partial);
-    EXPECT_EQ(back->result.rays, rec.result.rays);
-    EXPECT_EQ(back->result.frame, 12);
+    ASSERT_EQ(back->results.size(), 2u);
+    EXPECT_EQ(back->results[0].message, r.message);
+    EXPECT_EQ(back->results[0].status, JobStatus::Partial);
+    EXPECT_EQ(back->results[0].rays, r.rays);
+    EXPECT_EQ(back->results[0].seconds, 1.5);
+    EXPECT_EQ(back->results[0].peak_memory, r.peak_memory);
+    EXPECT_EQ(back->results[1].frame, 13);
+    EXPECT_EQ(back->results[1].status, JobStatus::Skipped);
     EXPECT_EQ(back->band_file, rec.band_file);
+    EXPECT_EQ(back->host, "node07");
     EXPECT_EQ(back->restarts, 1);
     EXPECT_FALSE(read_task_record(dir.file("missing.json")));
 }
 
 TEST(FarmPlan, SbatchArgumentsSplitLikeAShell) {
     using Words = std::vector<std::string>;
-    EXPECT_EQ(split_arguments("  --time=1:00:00   --mem=8G "), (Words{"--time=1:00:00", "--mem=8G"}));
+    EXPECT_EQ(split_arguments("  --time=1:00:00   --mem=8G "),
+              (Words{"--time=1:00:00", "--mem=8G"}));
     EXPECT_EQ(split_arguments("--comment 'two words' -J \"x y\""),
               (Words{"--comment", "two words", "-J", "x y"}));
     EXPECT_EQ(split_arguments(""), Words{});

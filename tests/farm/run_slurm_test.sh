@@ -63,7 +63,8 @@ write_job() {
     {"scene": "$cornell", "name": "cornell.exr"},
     {"scene": "$repo/scenes/glossy.gltf", "name": "glossy_banded.exr", "bands": 3,
      "aov": "albedo,normal,depth,variance,samples"},
-    {"scene": "$repo/scenes/motion-blur.gltf", "name": "anim_{frame}.exr", "frames": "1-3"},
+    {"scene": "$repo/scenes/motion-blur.gltf", "name": "anim_{frame}.exr", "frames": "1-3",
+     "frames_per_task": 2},
     {"scene": "broken.gltf"},
     {"scene": "$repo/scenes/soft-shadows.gltf", "name": "soft_half.exr", "half": true,
      "bands": 2}

@@ -40,8 +40,7 @@ struct Fixture {
     EmbreeAccel accel{s.scene};
     LightSet lights{s.scene, nullptr};
     RenderContext ctx{s.scene, accel, lights};
-    PerspectiveCamera camera{Transform::look_at({0, 0.5f, 4}, {0, 0, 0}, {0, 1, 0}), 0.8f, kW,
-                             kH};
+    PerspectiveCamera camera{Transform::look_at({0, 0.5f, 4}, {0, 0, 0}, {0, 1, 0}), 0.8f, kW, kH};
     std::unique_ptr<Integrator> integrator = make_integrator("path", {});
     RenderOptions opt;
     Fixture() {

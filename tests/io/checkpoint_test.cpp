@@ -47,8 +47,8 @@ bool same_bits(const Image& a, const Image& b) {
 
 void expect_same_film(const Film& a, const Film& b) {
     EXPECT_TRUE(same_bits(a.resolve(), b.resolve()));
-    for (Aov aov : {Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Position, Aov::Variance,
-                    Aov::Samples})
+    for (Aov aov :
+         {Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Position, Aov::Variance, Aov::Samples})
         EXPECT_TRUE(same_bits(a.resolve_aov(aov), b.resolve_aov(aov))) << int(aov);
     EXPECT_EQ(a.nonfinite_samples(), b.nonfinite_samples());
 }
