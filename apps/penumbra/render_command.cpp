@@ -158,7 +158,16 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
                           prior.seconds + since(render_start)});
     };
     ropt.checkpoint_interval = o.checkpoint_interval;
-    if (o.checkpoint_interval > 0) ropt.checkpoint = save_checkpoint;
+    // A timed checkpoint that cannot be written (disk full) costs only the insurance;
+    // the render goes on. The one on an interrupt below does fail the image.
+    if (o.checkpoint_interval > 0)
+        ropt.checkpoint = [&](const Film& f, uint32_t spp) {
+            try {
+                save_checkpoint(f, spp);
+            } catch (const std::exception& e) {
+                LOG_WARNING(e.what() << "; rendering on without a checkpoint");
+            }
+        };
 
     RenderStats stats;
     const Film film = render(setup->context(), *setup->camera, *setup->integrator, ropt, &stats);
