@@ -47,6 +47,8 @@ MpiDefault=none
 ReturnToService=2
 KillWait=30
 MinJobAge=600
+# Small, so the farm test's job file needs two arrays (submit cuts at MaxArraySize).
+MaxArraySize=5
 SlurmctldTimeout=30
 SlurmdTimeout=30
 NodeName=$host NodeAddr=127.0.0.1 CPUs=$cpus State=UNKNOWN
