@@ -214,5 +214,22 @@ TEST(FarmCli, TasksAndMergeWriteTheImagesOfRenderJob) {
     EXPECT_TRUE(fs::exists(dir.file("farm.farm/summary.txt")));
 }
 
+TEST(FarmCli, ATaskRefusesAJobFileChangedSinceSubmit) {
+    const test::ScratchDir dir;
+    const std::string job = dir.write(
+        "job.json", R"({"jobs": [{"scene": ")" + kCornell + R"(", "width": 8, "spp": 1}]})");
+    fs::create_directories(dir.file("job.farm"));
+    dir.write("job.farm/plan.txt", "0 job 0 band - frame - another.gltf\n");
+    const test::CliResult t = run_penumbra({"farm", "task", job, "--index", "0"});
+    EXPECT_EQ(t.status, 1) << t.output;
+    EXPECT_NE(t.output.find("changed since it was submitted"), std::string::npos) << t.output;
+    EXPECT_FALSE(fs::exists(dir.file("out/cornell-box.exr")));
+    const test::CliResult m = run_penumbra({"farm", "merge", job});
+    EXPECT_EQ(m.status, 1) << m.output;
+    EXPECT_TRUE(std::regex_search(
+        m.output, std::regex("cornell-box\\.gltf +- +failed .*changed since it was submitted")))
+        << m.output;
+}
+
 }  // namespace
 }  // namespace penumbra
