@@ -105,7 +105,7 @@ echo "render --job and farm submit --wait: $(awk "BEGIN {print $t1 - $t0}") s"
 # checkpoint and give the uninterrupted image.
 cat >long.json <<JSON
 {
-  "defaults": {"width": 48, "spp": 192, "out_dir": "long"},
+  "defaults": {"width": 48, "spp": 384, "out_dir": "long"},
   "jobs": [
     {"scene": "$cornell", "name": "long.exr", "aov": "albedo,variance"},
     {"scene": "$cornell", "name": "after_{frame}.exr", "spp": 8, "frames": "1-5"}
@@ -119,7 +119,7 @@ array=$(awk '/^array/ {print $2; exit}' long.farm/jobs.txt)  # item 0 is in the 
 merge=$(awk '/^merge/ {print $2}' long.farm/jobs.txt)
 log=long.farm/logs/task-${array}_0.log
 for _ in $(seq 1 300); do grep -q ': started, ' "$log" 2>/dev/null && break; sleep 0.1; done
-sleep 0.5
+# At once: the last pass holds half the samples, and the signal must come before it.
 # Slurm 22.05's scancel exits 1 (saying nothing) when a signal reaches the batch step
 # but no other step; the checkpoint below shows whether it arrived.
 scancel --full --signal=TERM "${array}_0" || true
