@@ -53,10 +53,14 @@ bool render_samples(const RenderContext& ctx, const Camera& camera,
     // 2 spp) still keeps every thread busy to the end of the pass; TBB steals the
     // rest. The image does not depend on it: each pixel's samples stay in index order
     // in one work item.
+    const int row0 = std::clamp(options.row_begin, 0, h);
+    const int row1 = options.row_end > 0 ? std::clamp(options.row_end, row0, h) : h;
     int ts = std::max(1, options.tile_size);
-    auto tile_count = [&](int size) { return ((w + size - 1) / size) * ((h + size - 1) / size); };
+    auto tile_count = [&](int size) {
+        return ((w + size - 1) / size) * ((row1 - row0 + size - 1) / size);
+    };
     while (ts > 4 && tile_count(ts) < 32 * threads) ts = std::max(4, ts / 2);
-    const int tiles_x = (w + ts - 1) / ts, tiles_y = (h + ts - 1) / ts;
+    const int tiles_x = (w + ts - 1) / ts, tiles_y = (row1 - row0 + ts - 1) / ts;
     std::atomic<bool> abandoned{false};
 
     // AOVs get their own instantiation of the tile loop, so a render without them does
@@ -65,8 +69,8 @@ bool render_samples(const RenderContext& ctx, const Camera& camera,
     auto render_tile = [&](int tile, auto with_aovs) {
         std::unique_ptr<Sampler> samplers[2] = {prototypes[0]->clone(),
                                                 halves ? prototypes[1]->clone() : nullptr};
-        const int x0 = (tile % tiles_x) * ts, y0 = (tile / tiles_x) * ts;
-        const int x1 = std::min(x0 + ts, w), y1 = std::min(y0 + ts, h);
+        const int x0 = (tile % tiles_x) * ts, y0 = row0 + (tile / tiles_x) * ts;
+        const int x1 = std::min(x0 + ts, w), y1 = std::min(y0 + ts, row1);
         uint64_t taken = 0;
         for (int y = y0; y < y1; ++y) {
             // A second Ctrl-C should not wait for the pass: check once per row.
@@ -146,8 +150,24 @@ uint32_t next_pass_samples(uint32_t done, uint32_t budget, double elapsed, doubl
 
 namespace {
 
+// Offers the film to options.checkpoint between passes, at most every
+// checkpoint_interval seconds and never after the last pass.
+struct CheckpointClock {
+    const RenderOptions& options;
+    double last = 0;
+    void after_pass(const Film& film, uint32_t spp, double now) {
+        if (options.checkpoint && spp < options.spp &&
+            now - last >= options.checkpoint_interval) {
+            options.checkpoint(film, spp);
+            last = now;
+        }
+    }
+};
+
 // Adaptive passes: min_spp samples, then adaptive_step more at a time, to the pixels
-// still active after each; every pass is even and starts at an even index.
+// still active after each; every pass is even and starts at an even index. A resumed
+// film (s.spp > 0) was checkpointed between two such passes, and the active pixels are
+// a function of the film, so the continuation takes the same passes.
 void render_adaptive(const RenderContext& ctx, const Camera& camera,
                      const Integrator& integrator, const RenderOptions& options, Film& film,
                      ProgressReporter& progress, RenderStats& s, uint64_t rays_before,
@@ -158,6 +178,8 @@ void render_adaptive(const RenderContext& ctx, const Camera& camera,
     const uint32_t min_spp = std::min(
         options.spp, options.min_spp ? (options.min_spp + 1) & ~1u
                                      : adaptive_min_spp(options.target_error));
+    if (s.spp >= min_spp) n_active = update_active_pixels(film, options.target_error, active);
+    CheckpointClock clock{options};
     while (n_active > 0 && s.spp < options.spp) {
         const uint32_t n =
             std::min(options.spp - s.spp, s.spp == 0 ? min_spp : adaptive_step(s.spp));
@@ -165,7 +187,7 @@ void render_adaptive(const RenderContext& ctx, const Camera& camera,
             s.interrupted = true;
             break;
         }
-        if (options.time_limit > 0 && s.spp > 0) {
+        if (options.time_limit > 0 && s.camera_samples > 0) {
             const double per_sample = elapsed() / double(s.camera_samples);
             if (elapsed() + per_sample * double(n) * double(n_active) > options.time_limit)
                 break;
@@ -180,6 +202,7 @@ void render_adaptive(const RenderContext& ctx, const Camera& camera,
         ++s.passes;
         progress.set_rays(ctx.accel.rays_traced() - rays_before);
         if (s.spp >= min_spp) n_active = update_active_pixels(film, options.target_error, active);
+        if (n_active > 0) clock.after_pass(film, s.spp, elapsed());
     }
     s.active_pixels = n_active;
 }
@@ -193,8 +216,13 @@ void render_passes(const RenderContext& ctx, const Camera& camera, const Integra
                         elapsed);
         return;
     }
+    // Passes are planned from this run's own pace: a resumed render starts with short
+    // passes again, so an early interrupt is honoured soon.
+    const uint32_t resumed = s.spp;
+    CheckpointClock clock{options};
     for (;;) {
-        const uint32_t n = next_pass_samples(s.spp, options.spp, elapsed(), options.time_limit);
+        const uint32_t n = next_pass_samples(s.spp - resumed, options.spp - resumed, elapsed(),
+                                             options.time_limit);
         if (n == 0) break;
         if (options.interrupts && options.interrupts->load() >= 1) {
             s.interrupted = true;
@@ -209,6 +237,7 @@ void render_passes(const RenderContext& ctx, const Camera& camera, const Integra
         ++s.passes;
         // Between passes no thread traces, so summing the per-thread counters is safe.
         progress.set_rays(ctx.accel.rays_traced() - rays_before);
+        clock.after_pass(film, s.spp, elapsed());
     }
 }
 
@@ -223,10 +252,13 @@ Film render(const RenderContext& ctx, const Camera& camera, const Integrator& in
         aovs.add(Aov::Error);
         aovs.add(Aov::Samples);
     }
-    Film film(w, h, aovs);
+    Film film = options.resume ? *options.resume : Film(w, h, aovs);
+    const uint32_t resumed = options.resume ? std::min(options.resume_spp, options.spp) : 0;
+    const int rows = (options.row_end > 0 ? std::min(options.row_end, h) : h) -
+                     std::clamp(options.row_begin, 0, h);
     const uint64_t rays_before = accel.rays_traced();
-    ProgressReporter progress(options.label, uint64_t(w) * h * options.spp, "samples",
-                              options.progress, options.batch);
+    ProgressReporter progress(options.label, uint64_t(w) * rows * (options.spp - resumed),
+                              "samples", options.progress, options.batch);
     if (options.time_limit > 0) progress.set_time_limit(options.time_limit);
 
     const auto start = std::chrono::steady_clock::now();
@@ -234,6 +266,7 @@ Film render(const RenderContext& ctx, const Camera& camera, const Integrator& in
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
     RenderStats s;
+    s.spp = resumed;
     // One arena for every pass (render_samples runs in it when the size matches).
     tbb::task_arena arena(options.threads > 0 ? options.threads
                                               : tbb::this_task_arena::max_concurrency());
@@ -245,7 +278,7 @@ Film render(const RenderContext& ctx, const Camera& camera, const Integrator& in
 
     s.seconds = elapsed();
     s.rays = accel.rays_traced() - rays_before;
-    if (options.target_error <= 0) s.camera_samples = uint64_t(w) * h * s.spp;
+    if (options.target_error <= 0) s.camera_samples = uint64_t(w) * rows * (s.spp - resumed);
     s.nonfinite_samples = film.nonfinite_samples();
     if (stats) *stats = s;
     return film;

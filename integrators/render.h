@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,18 @@ struct RenderOptions {
     // (0: adaptive_min_spp's rule) and at most spp. Adds the error and samples AOVs.
     double target_error = 0;
     uint32_t min_spp = 0;
+    // Only rows [row_begin, row_end) are rendered (a farm band); row_end 0: to the last.
+    // With filter importance sampling a sample only touches its own pixel, so a band's
+    // rows equal those of the whole image bit for bit.
+    int row_begin = 0, row_end = 0;
+    // Continue a render: `resume` holds samples [0, resume_spp) of every pixel (a
+    // checkpoint), and render() adds [resume_spp, spp).
+    const Film* resume = nullptr;
+    uint32_t resume_spp = 0;
+    // Called between passes, at most every checkpoint_interval seconds, with the film and
+    // the samples per pixel it holds (to write a checkpoint). Empty: never.
+    std::function<void(const Film&, uint32_t spp)> checkpoint;
+    double checkpoint_interval = 300;
 };
 
 struct RenderStats {
@@ -53,7 +66,8 @@ struct RenderStats {
     uint64_t rays = 0;
     uint64_t camera_samples = 0;  // over all pixels (fewer than w h spp when adaptive)
     uint64_t nonfinite_samples = 0;
-    uint32_t spp = 0;          // samples per pixel actually rendered (the most, if adaptive)
+    // Samples per pixel in the film, resumed ones included (the most, if adaptive).
+    uint32_t spp = 0;
     uint64_t active_pixels = 0;  // adaptive: pixels not converged when the render ended
     int passes = 0;
     bool interrupted = false;  // stopped by a user interrupt before options.spp

@@ -32,7 +32,8 @@ public:
             "shutter", "shutter_open", "shutter_close", "ocio_config", "working_space",
             "output_colorspace", "display", "view", "look", "aov", "half", "compression",
             "light_units", "default_light", "exposure", "strict", "max_texture_pixels",
-            "target_error", "adaptive_min_spp", "clamp_direct", "clamp_indirect", "regularize"};
+            "target_error", "adaptive_min_spp", "clamp_direct", "clamp_indirect", "regularize",
+            "bands", "frames_per_task"};
         for (const auto& [key, value] : m_object.items()) {
             bool known = false;
             for (const char* k : kKeys) known = known || key == k;
@@ -62,6 +63,8 @@ public:
         integer("height", s.height, 1, 1 << 15);
         integer("max_depth", s.max_depth, 0, 1024);
         integer("frame", s.frame, 0, 1 << 30);
+        integer("bands", s.bands, 1, 4096);
+        integer("frames_per_task", s.frames_per_task, 1, 100000);
         std::optional<int> spp;
         integer("spp", spp, 1, 1 << 24);
         if (spp) s.spp = static_cast<uint32_t>(*spp);

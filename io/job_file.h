@@ -16,6 +16,12 @@ struct JobSettings {
     std::optional<std::string> camera, variant, integrator, strategy, sampler, filter, accel;
     std::optional<std::string> output, out_dir, name, frames;
     std::optional<int> width, height, max_depth, frame;
+    // `penumbra farm`: split each image into this many row bands, one farm task each
+    // (`render --job` ignores it: one machine renders whole images).
+    std::optional<int> bands;
+    // `penumbra farm`: consecutive frames of an entry rendered by one task (fewer, longer
+    // tasks for a scheduler that starts only so many per second; docs/farm.md).
+    std::optional<int> frames_per_task;
     std::optional<uint32_t> spp;
     std::optional<uint64_t> seed;
     // Timeline: time (an instant), shutter_open + shutter_close (seconds), or frame /

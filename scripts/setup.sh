@@ -26,6 +26,8 @@ if [ "${1:-}" = "--test" ]; then
         # Embree's pathtracer tutorial and its Cornell box (scripts/crosscheck/efficiency.py
         # --embree).
         embree-tools
+        # A single-node Slurm cluster for the farm test (tests/farm/run_slurm_test.sh).
+        slurm-wlm munge
     )
 fi
 

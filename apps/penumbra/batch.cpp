@@ -37,6 +37,8 @@ void apply(const JobSettings& s, RenderCommandOptions& o) {
     if (s.width) o.width = *s.width;
     if (s.height) o.height = *s.height;
     if (s.max_depth) o.max_depth = *s.max_depth;
+    if (s.bands) o.bands = *s.bands;
+    if (s.frames_per_task) o.frames_per_task = *s.frames_per_task;
     if (s.spp) o.spp = *s.spp;
     if (s.seed) o.seed = *s.seed;
     if (s.time_limit) o.time_limit = *s.time_limit;
@@ -97,6 +99,12 @@ void validate(const RenderCommandOptions& o, const std::string& where) {
         const auto& kinds = exr_compressions();
         if (std::find(kinds.begin(), kinds.end(), o.compression) == kinds.end())
             throw std::invalid_argument("unknown EXR compression '" + o.compression + "'");
+        // Adaptive sampling stops a pixel by the error of its 3x3 neighbourhood, so a
+        // band's edge rows would depend on rows another task renders.
+        if (o.bands > 1 && o.target_error > 0)
+            throw std::invalid_argument(
+                "\"bands\" cannot be combined with \"target_error\" (adaptive sampling "
+                "decides each pixel from its neighbours, across band edges)");
     } catch (const std::invalid_argument& e) {
         throw SceneError(where + ": " + e.what());
     }
@@ -168,12 +176,33 @@ std::string output_path(const BatchJob& job, const std::string& camera) {
     return (fs::path(o.out_dir) / expand_output_name(o.name, fields)).string();
 }
 
-void print_summary(const std::vector<JobResult>& results) {
+std::pair<int, int> band_rows(int height, int band, int bands) {
+    const auto row = [&](int b) { return int(int64_t(height) * b / bands); };
+    return {row(band), row(band + 1)};
+}
+
+std::string band_output_path(const std::string& output, int band, int bands) {
+    const fs::path p(output);
+    char suffix[48];
+    const int digits = int(std::to_string(bands).size());
+    std::snprintf(suffix, sizeof suffix, ".band-%0*d-of-%d.exr", digits, band + 1, bands);
+    return (p.parent_path() / (p.stem().string() + suffix)).string();
+}
+
+std::string format_summary(const std::vector<JobResult>& results) {
+    std::string out;
+    auto line = [&out](const char* format, auto... values) {
+        const int n = std::snprintf(nullptr, 0, format, values...);
+        std::string buf(size_t(std::max(n, 0)) + 1, '\0');
+        std::snprintf(buf.data(), buf.size(), format, values...);
+        buf.resize(size_t(std::max(n, 0)));
+        out += buf;
+    };
     size_t width = 5;
     for (const JobResult& r : results)
         width = std::max(width, fs::path(r.scene).filename().string().size());
-    std::printf("%-*s  %5s  %-7s  %8s  %7s  %8s  %10s  %s\n", int(width), "scene", "frame",
-                "status", "time", "spp", "rays/s", "relMSE", "output / error");
+    line("%-*s  %5s  %-7s  %8s  %7s  %8s  %10s  %s\n", int(width), "scene", "frame", "status",
+         "time", "spp", "rays/s", "relMSE", "output / error");
     size_t counts[4] = {0, 0, 0, 0};
     for (const JobResult& r : results) {
         static const char* const kStatus[] = {"ok", "partial", "failed", "skipped"};
@@ -186,14 +215,18 @@ void print_summary(const std::vector<JobResult>& results) {
             r.message.empty() ? r.output : (r.output.empty() ? "" : r.output + ": ") + r.message;
         char relmse[32] = "-";
         if (ran && r.relmse) std::snprintf(relmse, sizeof relmse, "%.4e", *r.relmse);
-        std::printf("%-*s  %5s  %-7s  %8s  %7s  %8s  %10s  %s\n", int(width),
-                    fs::path(r.scene).filename().string().c_str(), frame.c_str(),
-                    kStatus[int(r.status)], ran ? format_duration(r.seconds).c_str() : "-",
-                    ran ? std::to_string(r.spp).c_str() : "-", rate.c_str(), relmse,
-                    note.c_str());
+        line("%-*s  %5s  %-7s  %8s  %7s  %8s  %10s  %s\n", int(width),
+             fs::path(r.scene).filename().string().c_str(), frame.c_str(),
+             kStatus[int(r.status)], ran ? format_duration(r.seconds).c_str() : "-",
+             ran ? std::to_string(r.spp).c_str() : "-", rate.c_str(), relmse, note.c_str());
     }
-    std::printf("%zu images: %zu ok, %zu partial, %zu failed, %zu skipped\n", results.size(),
-                counts[0], counts[1], counts[2], counts[3]);
+    line("%zu images: %zu ok, %zu partial, %zu failed, %zu skipped\n", results.size(),
+         counts[0], counts[1], counts[2], counts[3]);
+    return out;
+}
+
+void print_summary(const std::vector<JobResult>& results) {
+    std::fputs(format_summary(results).c_str(), stdout);
     std::fflush(stdout);
 }
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "apps/penumbra/render_command.h"
@@ -16,6 +17,9 @@ struct BatchJob {
     RenderCommandOptions options;  // command line < job file defaults < job entry
     std::string where;             // "jobs.json: jobs[2]" for job file entries
     size_t index = 0;              // position in the batch, from 0 ({index})
+    // A farm task renders one row band of options.bands into band_output_path(); -1: the
+    // whole image (`render --job` always renders whole images).
+    int band = -1;
 };
 
 // Expands scenes x frames and the job file's entries, in order. Throws SceneError for a
@@ -27,6 +31,13 @@ std::vector<BatchJob> plan_batch(const RenderCommandOptions& o);
 std::string output_path(const BatchJob& job, const std::string& camera);
 bool output_needs_camera(const BatchJob& job);
 
+// Rows [first, last) of band `band` of `bands` in an image `height` rows tall, as even
+// as whole rows allow; bands beyond the height are empty.
+std::pair<int, int> band_rows(int height, int band, int bands);
+// Where a band is written until the merge assembles the output: beside it, as
+// NAME.band-B-of-N.exr (B and N from 1 and 0-padded, so they sort).
+std::string band_output_path(const std::string& output, int band, int bands);
+
 enum class JobStatus { Ok, Partial, Failed, Skipped };
 
 struct JobResult {
@@ -36,11 +47,13 @@ struct JobResult {
     double seconds = 0;  // rendering only
     uint32_t spp = 0;
     uint64_t rays = 0;
+    uint64_t peak_memory = 0;      // of the process when the image was done
     std::optional<double> relmse;  // against --reference, when given
 };
 
 // One row per job: scene, frame, status, time, spp, rays/s, relMSE against the
 // reference (when given), and the output or error.
 void print_summary(const std::vector<JobResult>& results);
+std::string format_summary(const std::vector<JobResult>& results);
 
 }  // namespace penumbra

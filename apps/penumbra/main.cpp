@@ -7,6 +7,7 @@
 
 #include "apps/penumbra/check_accel_command.h"
 #include "apps/penumbra/converge_command.h"
+#include "apps/penumbra/farm_command.h"
 #include "apps/penumbra/render_command.h"
 #include "core/log.h"
 
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
         "  penumbra converge scenes/cornell-box.gltf --reference-spp 4096 -o conv \\\n"
         "      --compare 'independent=--sampler independent;sobol=--sampler sobol'\n"
         "  penumbra check-accel scenes/cornell-box.gltf\n"
+        "  penumbra farm submit jobs.json --cpus-per-task 8 --wait\n"
         "Run 'penumbra SUBCOMMAND --help' for the options of each subcommand.");
     app.set_version_flag("--version", std::string("penumbra ") + PENUMBRA_VERSION);
 
@@ -33,6 +35,8 @@ int main(int argc, char** argv) {
     penumbra::add_check_accel_command(app, check_accel_options);
     penumbra::ConvergeOptions converge_options;
     penumbra::add_converge_command(app, converge_options);
+    penumbra::FarmOptions farm_options;
+    CLI::App* farm = penumbra::add_farm_command(app, farm_options);
 
     try {
         app.parse(argc, argv);
@@ -45,6 +49,7 @@ int main(int argc, char** argv) {
             return penumbra::run_check_accel_command(check_accel_options);
         if (app.got_subcommand("converge"))
             return penumbra::run_converge_command(converge_options);
+        if (app.got_subcommand("farm")) return penumbra::run_farm_command(*farm, farm_options);
     } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;

@@ -6,17 +6,20 @@
 #include <cstdio>
 #include <filesystem>
 #include <set>
+#include <tuple>
 
 #include "apps/penumbra/batch.h"
 #include "apps/penumbra/interrupt.h"
 #include "apps/penumbra/output_options.h"
 #include "apps/penumbra/sampling_options.h"
+#include "apps/penumbra/render_checkpoint.h"
 #include "apps/penumbra/scene_setup.h"
 #include "apps/penumbra/timeline_options.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/progress.h"
 #include "integrators/render.h"
+#include "io/checkpoint.h"
 #include "io/image_writer.h"
 #include "io/render_output.h"
 #include "io/render_writer.h"
@@ -55,6 +58,12 @@ void add_render_command(CLI::App& app, RenderCommandOptions& o) {
     cmd->add_flag("--overwrite", o.overwrite,
                   "Render images whose output exists (by default a finished output is "
                   "skipped, so an interrupted batch resumes)");
+    cmd->add_option("--checkpoint-interval", o.checkpoint_interval,
+                    "Seconds between checkpoints (OUTPUT.ckpt: the raw film, so the same "
+                    "command continues a stopped render exactly); 0: only on Ctrl-C or "
+                    "SIGTERM")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
     cmd->add_flag("--no-preview", o.no_preview, "Do not write the sRGB PNG preview");
     add_image_options(cmd, o);
     add_output_options(cmd, o);
@@ -89,6 +98,14 @@ bool claim_output(const BatchJob& job, const std::string& output, BatchState& st
         result.message = "exists (--overwrite renders it again)";
         return false;
     }
+    // A farm band is done when its band file is (the merge has not run yet).
+    const std::string band =
+        job.band >= 0 ? band_output_path(output, job.band, job.options.bands) : "";
+    if (!band.empty() && !job.options.overwrite && fs::exists(band) && is_finished_render(band)) {
+        result.status = JobStatus::Skipped;
+        result.message = "band exists (--overwrite renders it again)";
+        return false;
+    }
     return true;
 }
 
@@ -104,23 +121,73 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
     if (output_needs_camera(job) &&
         !claim_output(job, output_path(job, cam_desc.name), state, result))
         return;
-    const std::string& output = result.output;
+    // A band renders its rows into its own file; the merge writes result.output.
+    const std::string output = job.band >= 0
+                                   ? band_output_path(result.output, job.band, o.bands)
+                                   : result.output;
 
     RenderOptions ropt = render_options_for(o, fs::path(path).filename().string());
     if (o.timeline.frame) ropt.label += " frame " + std::to_string(*o.timeline.frame);
+    if (job.band >= 0) {
+        std::tie(ropt.row_begin, ropt.row_end) = band_rows(setup->height, job.band, o.bands);
+        ropt.label += " band " + std::to_string(job.band + 1) + "/" + std::to_string(o.bands);
+    }
     ropt.interrupts = &state.interrupts;
     ropt.batch = &state.progress;
+
+    // Continue from a checkpoint of this very render; a stale or damaged one is named
+    // and the render starts from sample 0.
+    const std::string ckpt = checkpoint_path(output);
+    const std::string fingerprint = render_fingerprint(job, *setup, ropt);
+    Film resumed(setup->width, setup->height, ropt.aovs);
+    CheckpointState prior;
+    std::string why;
+    if (const auto state_read = read_checkpoint(ckpt, fingerprint, resumed, &why)) {
+        prior = *state_read;
+        ropt.resume = &resumed;
+        ropt.resume_spp = prior.spp;
+        if (!o.quiet)
+            std::fprintf(stderr, "%s: resuming from the checkpoint at %u of %u spp\n",
+                         output.c_str(), prior.spp, o.spp);
+    } else if (fs::exists(ckpt)) {
+        LOG_WARNING(why << "; rendering from sample 0");
+    }
+    const uint64_t rays_start = setup->accel->rays_traced();
+    const auto render_start = Clock::now();
+    auto save_checkpoint = [&](const Film& f, uint32_t spp) {
+        write_checkpoint(ckpt, f,
+                         {fingerprint, spp, prior.rays + setup->accel->rays_traced() - rays_start,
+                          prior.seconds + since(render_start)});
+    };
+    ropt.checkpoint_interval = o.checkpoint_interval;
+    // A timed checkpoint that cannot be written (disk full) costs only the insurance;
+    // the render goes on. The one on an interrupt below does fail the image.
+    if (o.checkpoint_interval > 0)
+        ropt.checkpoint = [&](const Film& f, uint32_t spp) {
+            try {
+                save_checkpoint(f, spp);
+            } catch (const std::exception& e) {
+                LOG_WARNING(e.what() << "; rendering on without a checkpoint");
+            }
+        };
+
     RenderStats stats;
     const Film film = render(setup->context(), *setup->camera, *setup->integrator, ropt, &stats);
+    stats.rays += prior.rays;
+    stats.seconds += prior.seconds;
     result.seconds = stats.seconds;
     result.spp = stats.spp;
     result.rays = stats.rays;
     if (stats.aborted || stats.spp == 0) {
-        // A second Ctrl-C, or one before the first pass: there is no image to keep.
+        // A second Ctrl-C, or one before the first pass: there is no image to keep (an
+        // earlier checkpoint stays for the next run).
         result.status = JobStatus::Failed;
         result.message = "interrupted before an image was complete; nothing written";
         return;
     }
+    // Stopped early by a signal: the checkpoint first, so the partial image never
+    // exists without what continues it.
+    if (stats.interrupted) save_checkpoint(film, stats.spp);
 
     auto t0 = Clock::now();
     Metadata metadata = {
@@ -183,10 +250,15 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
     const RenderFilesResult written =
         write_render(files, film, *setup->color, cam_desc, std::move(metadata));
     result.relmse = written.relmse;
+    result.peak_memory = peak_memory_bytes();
+    std::error_code ec;
+    if (!stats.interrupted) fs::remove(ckpt, ec);
     const std::string& preview = files.preview;
     const double write_s = since(t0);
     result.status = stats.interrupted ? JobStatus::Partial : JobStatus::Ok;
-    if (stats.interrupted) result.message = "interrupted: partial image";
+    if (stats.interrupted)
+        result.message = "interrupted: partial image; the same command continues it from " +
+                         ckpt;
 
     if (!o.quiet) {
         const AccelStats as = setup->accel->stats();
@@ -233,10 +305,17 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
 int run_render_command(const RenderCommandOptions& o) {
     if (o.quiet) set_log_level(LogLevel::Error);
     const std::vector<BatchJob> jobs = plan_batch(o);
+    std::vector<JobResult> results;
+    const int status = run_render_jobs(jobs, o, results);
+    if (!o.quiet && results.size() > 1) print_summary(results);
+    return status;
+}
+
+int run_render_jobs(const std::vector<BatchJob>& jobs, const RenderCommandOptions& o,
+                    std::vector<JobResult>& results) {
     const InterruptScope interrupt;
     BatchProgress progress(jobs.size(), !o.quiet && jobs.size() > 1);
     BatchState state{progress, interrupt.count(), {}};
-    std::vector<JobResult> results;
     for (const BatchJob& job : jobs) {
         JobResult r;
         r.scene = job.scene;
@@ -263,9 +342,8 @@ int run_render_command(const RenderCommandOptions& o) {
     const auto failed = std::count_if(results.begin(), results.end(), [](const JobResult& r) {
         return r.status == JobStatus::Failed;
     });
-    if (!o.quiet && results.size() > 1) print_summary(results);
-    // 128 + SIGINT, as a shell reports a command stopped by Ctrl-C.
-    if (interrupt.signals() > 0) return 130;
+    // 128 + the signal, as a shell reports a command stopped by Ctrl-C or SIGTERM.
+    if (interrupt.signals() > 0) return interrupt.exit_status();
     return failed ? 1 : 0;
 }
 

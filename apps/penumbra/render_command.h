@@ -68,6 +68,11 @@ struct RenderCommandOptions {
     double target_error = 0;
     unsigned adaptive_min_spp = 0;
     float clamp_direct = 0, clamp_indirect = 0, regularize = 0;
+    // Checkpoints (io/checkpoint.h): written on an interrupt and every this many seconds
+    // between passes; 0: only on an interrupt.
+    double checkpoint_interval = 300;
+    int bands = 1;  // the job key "bands": row bands per image on the farm
+    int frames_per_task = 1;  // the job key "frames_per_task": frames per farm task
 };
 
 void add_render_command(CLI::App& app, RenderCommandOptions& options);
@@ -75,5 +80,12 @@ void add_render_command(CLI::App& app, RenderCommandOptions& options);
 // the exit status: 0 when all rendered or were skipped, 1 if any failed, 130 after
 // Ctrl-C.
 int run_render_command(const RenderCommandOptions& options);
+
+struct BatchJob;
+struct JobResult;
+// Renders the given jobs of a batch (as run_render_command does after planning it) and
+// returns the exit status: 0, 1 if any failed, 128 + the signal after an interrupt.
+int run_render_jobs(const std::vector<BatchJob>& jobs, const RenderCommandOptions& options,
+                    std::vector<JobResult>& results);
 
 }  // namespace penumbra

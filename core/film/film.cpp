@@ -164,6 +164,19 @@ Image Film::resolve() const {
     return img;
 }
 
+std::vector<Film::Buffer> Film::buffers() {
+    auto raw = [](const char* name, auto& v) {
+        return Buffer{name, v.data(), v.size() * sizeof(v[0])};
+    };
+    // Empty AOV buffers are listed too (0 bytes): the list is the same for every film.
+    return {raw("pixels", m_pixels),         raw("albedo", m_aov.albedo),
+            raw("normal", m_aov.normal),     raw("position", m_aov.position),
+            raw("square", m_aov.square),     raw("weight", m_aov.weight),
+            raw("hit_weight", m_aov.hit_weight), raw("depth", m_aov.depth),
+            raw("weight2", m_aov.weight2),   raw("count", m_aov.count),
+            raw("odd", m_aov.odd),           raw("odd_weight", m_aov.odd_weight)};
+}
+
 uint64_t Film::nonfinite_samples() const {
     uint64_t n = 0;
     for (const Pixel& px : m_pixels) n += px.nonfinite;

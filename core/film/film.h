@@ -45,6 +45,17 @@ public:
     Image resolve_aov(Aov aov) const;
     uint64_t nonfinite_samples() const;
 
+    // Every accumulator as raw bytes, by name, for checkpoints (io/checkpoint.h): a
+    // buffer added to the film is listed here and so saved and restored with the rest.
+    struct Buffer {
+        const char* name;
+        void* data;
+        size_t bytes;
+    };
+    std::vector<Buffer> buffers();
+    // The same list, to read from only.
+    std::vector<Buffer> buffers() const { return const_cast<Film*>(this)->buffers(); }
+
     // Depth of a pixel that no sample hit (Cycles' background Z).
     static constexpr float kNoHitDepth = 1e10f;
 

@@ -1,0 +1,150 @@
+#include "apps/penumbra/farm_merge.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include "apps/penumbra/farm_plan.h"
+#include "core/error.h"
+#include "io/atomic_file.h"
+#include "io/band_merge.h"
+#include "io/image_writer.h"
+#include "io/render_output.h"
+
+namespace penumbra {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string band_name(int band, int bands) {
+    return "band " + std::to_string(band + 1) + "/" + std::to_string(bands);
+}
+
+// Merges the bands of one image whose tasks all rendered (or skipped) their band.
+void merge_image(const BatchJob& job, const std::vector<TaskRecord>& bands, JobResult& r) {
+    const int n = job.options.bands;
+    r.output = bands[0].results.at(0).output;
+    bool all_skipped = true;
+    for (const TaskRecord& b : bands) all_skipped &= b.results[0].status == JobStatus::Skipped;
+    if (all_skipped && fs::exists(r.output) && is_finished_render(r.output)) {
+        r.status = JobStatus::Skipped;
+        r.message = "exists (--overwrite renders it again)";
+        return;
+    }
+    std::vector<BandFile> exr, png;
+    uint64_t rays = 0, nonfinite = 0;
+    uint32_t spp = ~0u;
+    bool partial = false;
+    int height = -1;
+    for (int b = 0; b < n; ++b) {
+        const std::string file = band_output_path(r.output, b, n);
+        if (!fs::exists(file))
+            throw SceneError(r.output + ": " + band_name(b, n) + " is missing (" + file + ")");
+        if (height < 0) height = image_height(file);
+        const auto [row0, row1] = band_rows(height, b, n);
+        exr.push_back({file, row0, row1});
+        const std::string preview = preview_path_for(file);
+        if (fs::exists(preview)) png.push_back({preview, row0, row1});
+        rays += std::stoull(image_attribute(file, "penumbra:rays", "0"));
+        nonfinite += std::stoull(image_attribute(file, "penumbra:nonfinite_samples", "0"));
+        spp = std::min<uint32_t>(spp,
+                                 uint32_t(std::stoul(image_attribute(file, "penumbra:spp", "0"))));
+        partial |= image_attribute(file, "penumbra:partial", "0") == "1";
+        r.seconds += bands[size_t(b)].results[0].seconds;
+        r.peak_memory = std::max(r.peak_memory, bands[size_t(b)].results[0].peak_memory);
+    }
+    // The header as one machine writes it: these are the only values that differ by band.
+    merge_bands(exr, r.output,
+                {{"penumbra:rays", std::to_string(rays)},
+                 {"penumbra:nonfinite_samples", std::to_string(nonfinite)},
+                 {"penumbra:spp", std::to_string(spp)},
+                 {"penumbra:partial", partial ? "1" : "0"}});
+    if (png.size() == exr.size()) merge_bands(png, preview_path_for(r.output));
+    r.spp = spp;
+    r.rays = rays;
+    r.status = partial ? JobStatus::Partial : JobStatus::Ok;
+    if (partial) {
+        r.message = "partial: a band was stopped; submitting again continues it";
+        return;
+    }
+    std::error_code ec;
+    for (const BandFile& f : exr) fs::remove(f.path, ec);
+    for (const BandFile& f : png) fs::remove(f.path, ec);
+}
+
+}  // namespace
+
+int run_farm_merge(const std::string& job_file, double checkpoint_interval) {
+    const FarmPlan plan = load_farm_plan(job_file, checkpoint_interval);
+    const std::string dir = farm_dir(job_file);
+    std::vector<JobResult> results(plan.jobs.size());
+    std::vector<std::vector<TaskRecord>> bands(plan.jobs.size());
+    for (size_t j = 0; j < plan.jobs.size(); ++j) {
+        results[j].scene = plan.jobs[j].scene;
+        results[j].frame = plan.jobs[j].options.timeline.frame.value_or(-1);
+    }
+    std::vector<std::string> problems(plan.jobs.size());
+    auto problem = [&](size_t job, const std::string& what) {
+        problems[job] += (problems[job].empty() ? "" : "; ") + what;
+    };
+    for (size_t i = 0; i < plan.items.size(); ++i) {
+        const WorkItem& item = plan.items[i];
+        const BatchJob& job = plan.jobs[item.job];
+        const std::string where =
+            item.band < 0 ? "" : band_name(item.band, job.options.bands) + ": ";
+        const auto rec = read_task_record(task_record_path(dir, i));
+        if (!rec || rec->results.empty()) {
+            for (size_t k = 0; k < item.count; ++k)
+                problem(item.job + k, where + "task " + std::to_string(i) +
+                                          " left no result (killed? see " + dir + "/logs/)");
+            continue;
+        }
+        if (item.band >= 0) {
+            if (rec->results[0].status == JobStatus::Failed)
+                problem(item.job, where + rec->results[0].message);
+            bands[item.job].push_back(*rec);
+            continue;
+        }
+        for (size_t k = 0; k < item.count; ++k) {
+            const size_t j = item.job + k;
+            if (k >= rec->results.size()) {
+                problem(j, "task " + std::to_string(i) + " left no result for this frame");
+                continue;
+            }
+            JobResult r = rec->results[k];
+            r.scene = results[j].scene;
+            r.frame = results[j].frame;
+            if (r.status == JobStatus::Failed) problem(j, r.message);
+            // A frame the task never started (it was stopped before) is not done.
+            if (r.status == JobStatus::Skipped && !fs::exists(r.output))
+                problem(j, "not rendered: " + r.message);
+            results[j] = r;
+        }
+    }
+    for (size_t j = 0; j < plan.jobs.size(); ++j) {
+        JobResult& r = results[j];
+        if (!problems[j].empty()) {
+            r.status = JobStatus::Failed;
+            r.message = problems[j];
+            continue;
+        }
+        if (plan.jobs[j].options.bands <= 1) continue;
+        try {
+            merge_image(plan.jobs[j], bands[j], r);
+        } catch (const std::exception& e) {
+            r.status = JobStatus::Failed;
+            r.message = std::string("merge: ") + e.what();
+        }
+    }
+    const bool bad = std::any_of(results.begin(), results.end(), [](const JobResult& r) {
+        return r.status == JobStatus::Failed || r.status == JobStatus::Partial;
+    });
+    const std::string summary = format_summary(results);
+    write_text_file(dir + "/summary.txt", summary);
+    write_text_file(dir + "/exit_status", bad ? "1\n" : "0\n");
+    std::fputs(summary.c_str(), stdout);
+    return bad ? 1 : 0;
+}
+
+}  // namespace penumbra
