@@ -2,6 +2,8 @@
 // (io/gltf_mesh_checks.cpp): POSITION accessors without min/max or with a min/max the
 // data disagree with, index counts that are not whole triangles, primitives without
 // triangles. --strict makes each an error. Also: loaded meshes are not duplicated.
+#include "io/gltf_mesh_checks.h"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -205,6 +207,27 @@ TEST(GltfMeshChecks, LoadedMeshesAreHeldOnceAndSharedWithEmbree) {
     EXPECT_LE(mesh_memory_bytes(s), exact + 64);
     const EmbreeAccel accel(s);
     EXPECT_EQ(accel.copied_bytes(), 0u);
+}
+
+// Draco-decoded positions (lossy) are not held to the file's bounds: encoders write the
+// bounds of the values before quantisation. Their absence is still reported.
+TEST(GltfMeshChecks, LossyPositionsAreNotHeldToTheirBounds) {
+    tinygltf::Model model;
+    model.accessors.resize(2);
+    model.accessors[0].minValues = {0, 0, 0};
+    model.accessors[0].maxValues = {1, 1, 1};
+    const GltfContext ctx{model, "draco.glb"};
+    const std::vector<Vec3> quantised = {{0, 0, 0}, {1.001f, 1, 1}};  // 1e-3 off
+    for (const bool lossy : {true, false}) {
+        MeshChecks checks(ctx);
+        checks.check_position_bounds(0, quantised, lossy);
+        checks.check_position_bounds(1, quantised, lossy);  // no bounds
+        testing::internal::CaptureStderr();
+        checks.report();
+        const std::string log = testing::internal::GetCapturedStderr();
+        EXPECT_EQ(count(log, "1 POSITION accessor(s) have no min/max"), 1u) << log;
+        EXPECT_EQ(count(log, "disagrees with their data"), lossy ? 0u : 1u) << log;
+    }
 }
 
 }  // namespace
