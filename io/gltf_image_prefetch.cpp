@@ -4,9 +4,8 @@
 
 namespace penumbra {
 
-void ImagePrefetch::record(std::pair<int, int> key, std::vector<uint8_t> bytes,
-                           std::string name, ImageEncoding encoding,
-                           const TextureDecodeLimits& limits) {
+void ImagePrefetch::record(std::pair<int, int> key, std::vector<uint8_t> bytes, std::string name,
+                           ImageEncoding encoding, const TextureDecodeLimits& limits) {
     if (m_jobs.count(key)) return;
     m_jobs.emplace(key, Job{std::move(bytes), std::move(name), encoding, limits, {}, nullptr});
 }

@@ -140,8 +140,7 @@ void load_materials(const GltfContext& ctx, Scene& scene) {
         Scene scratch;
         TextureTable collect(dry, scratch, &prefetch);
         try {
-            for (size_t i = 0; i < ctx.model.materials.size(); ++i)
-                load_material(dry, i, collect);
+            for (size_t i = 0; i < ctx.model.materials.size(); ++i) load_material(dry, i, collect);
         } catch (const std::exception&) {
         }
     }

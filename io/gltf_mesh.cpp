@@ -201,7 +201,8 @@ bool build_primitive(const GltfContext& ctx, MeshChecks& checks, const tinygltf:
     for (size_t i = 0; i < n; ++i)
         if (!is_finite(mesh.positions[i]))
             ctx.fail(el, "POSITION element " + std::to_string(i) + " is not finite");
-    checks.check_position_bounds(pos_index, mesh.positions);
+    checks.check_position_bounds(pos_index, mesh.positions,
+                                 prim.extensions.count("KHR_draco_mesh_compression") > 0);
 
     mesh.normals = to_vec3(reader.read("NORMAL", kNormal, n));
     for (size_t i = 0; i < mesh.normals.size(); ++i) {

@@ -35,7 +35,8 @@ std::string format(Vec3 v) {
 
 }  // namespace
 
-void MeshChecks::check_position_bounds(int accessor, const std::vector<Vec3>& positions) {
+void MeshChecks::check_position_bounds(int accessor, const std::vector<Vec3>& positions,
+                                       bool lossy) {
     if (positions.empty() || !m_checked.insert(accessor).second) return;
     const tinygltf::Accessor& a = m_ctx.model.accessors[size_t(accessor)];
     const std::string el = element("accessors", size_t(accessor));
@@ -44,6 +45,7 @@ void MeshChecks::check_position_bounds(int accessor, const std::vector<Vec3>& po
         m_unbounded.push_back(el);
         return;
     }
+    if (lossy) return;
     Vec3 lo = positions[0], hi = positions[0];
     for (const Vec3& p : positions) {
         lo = min(lo, p);

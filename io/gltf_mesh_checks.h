@@ -17,8 +17,10 @@ public:
     explicit MeshChecks(const GltfContext& ctx) : m_ctx(ctx) {}
 
     // POSITION accessor `accessor`, read as `positions`: glTF 2.0 (section 3.6.2.5)
-    // requires its min and max, which must bound the data. Each accessor is checked once.
-    void check_position_bounds(int accessor, const std::vector<Vec3>& positions);
+    // requires its min and max, which must bound the data (unless `lossy`: decoded from
+    // Draco, whose quantisation moves vertices while encoders keep the original bounds,
+    // as chess-board.glb does). Each accessor is checked once.
+    void check_position_bounds(int accessor, const std::vector<Vec3>& positions, bool lossy);
     // Primitive `el`'s index list of `count` indices is cut to whole triangles.
     void partial_triangle(const std::string& el, size_t count);
     // Primitive `el` has no triangles and is skipped.

@@ -291,13 +291,13 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
                   "parse %.2f s (cpu %.2f), meshes %.2f (%.2f), materials %.2f (%.2f), nodes "
                   "%.2f (%.2f); %s build %.2f s (cpu %.2f); %zu triangles in %s of meshes, "
                   "%zu images, %s %s; peak memory %s",
-                  ls.parse.seconds, ls.parse.cpu_seconds, ls.meshes.seconds,
-                  ls.meshes.cpu_seconds, ls.materials.seconds, ls.materials.cpu_seconds,
-                  ls.nodes.seconds, ls.nodes.cpu_seconds, as.name.c_str(), s->build_seconds,
+                  ls.parse.seconds, ls.parse.cpu_seconds, ls.meshes.seconds, ls.meshes.cpu_seconds,
+                  ls.materials.seconds, ls.materials.cpu_seconds, ls.nodes.seconds,
+                  ls.nodes.cpu_seconds, as.name.c_str(), s->build_seconds,
                   double(std::clock() - build_cpu) / CLOCKS_PER_SEC, unique_triangle_count(scene),
                   format_bytes(mesh_memory_bytes(scene)).c_str(), scene.images.size(),
-                  as.name.c_str(),
-                  format_bytes(as.memory_bytes).c_str(), format_bytes(peak_memory_bytes()).c_str());
+                  as.name.c_str(), format_bytes(as.memory_bytes).c_str(),
+                  format_bytes(peak_memory_bytes()).c_str());
     LOG_INFO(path << ": load and build: " << line);
 
     apply_lens_options(o, path, s->width, s->height, *s->accel, s->camera_desc);

@@ -108,7 +108,7 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
     const RTCBuildQuality quality =
         options.quality == EmbreeBuildOptions::Quality::Low    ? RTC_BUILD_QUALITY_LOW
         : options.quality == EmbreeBuildOptions::Quality::High ? RTC_BUILD_QUALITY_HIGH
-                                                                : RTC_BUILD_QUALITY_MEDIUM;
+                                                               : RTC_BUILD_QUALITY_MEDIUM;
     const int flags = RTC_SCENE_FLAG_ROBUST | (options.compact ? RTC_SCENE_FLAG_COMPACT : 0);
     const auto start = std::chrono::steady_clock::now();
     Impl& im = *m_impl;

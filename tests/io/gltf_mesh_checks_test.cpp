@@ -2,6 +2,8 @@
 // (io/gltf_mesh_checks.cpp): POSITION accessors without min/max or with a min/max the
 // data disagree with, index counts that are not whole triangles, primitives without
 // triangles. --strict makes each an error. Also: loaded meshes are not duplicated.
+#include "io/gltf_mesh_checks.h"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -73,11 +75,10 @@ TEST(GltfMeshChecks, MissingPositionBoundsAreOneWarning) {
     const int view = 1;
     const int a = b.add_accessor(view, 0, test::kFloat, "VEC3", 3);
     const int c = b.add_accessor(view, data.size() * sizeof(float), test::kFloat, "VEC3", 3);
-    const std::string path =
-        b.write(dir, "unbounded.gltf",
-                primitives_scene({position_prim(a), position_prim(bounded), position_prim(c),
-                                  position_prim(a)}),
-                test::BufferStorage::DataUri);
+    const std::string path = b.write(dir, "unbounded.gltf",
+                                     primitives_scene({position_prim(a), position_prim(bounded),
+                                                       position_prim(c), position_prim(a)}),
+                                     test::BufferStorage::DataUri);
     Scene s;
     const std::string log = warnings_of(path, &s);
     EXPECT_EQ(count(log, "warning: "), 1u) << log;
@@ -101,18 +102,17 @@ TEST(GltfMeshChecks, WrongPositionBoundsAreOneWarning) {
     const ScratchDir dir;
     GltfBuilder b;
     const std::vector<float> third = {0, 0, 0, 1.0f / 3, 0, 0, 0, 2.0f / 3, 0};
-    const int rounded = b.add(third, test::kFloat, "VEC3",
-                              "\"min\":[0,0,0],\"max\":[0.333333,0.666667,0]");
-    const int low_max =
-        b.add(kTriangle, test::kFloat, "VEC3", "\"min\":[0,0,0],\"max\":[1,1.5,0]");
+    const int rounded =
+        b.add(third, test::kFloat, "VEC3", "\"min\":[0,0,0],\"max\":[0.333333,0.666667,0]");
+    const int low_max = b.add(kTriangle, test::kFloat, "VEC3", "\"min\":[0,0,0],\"max\":[1,1.5,0]");
     const int loose_min =
         b.add(kTriangle, test::kFloat, "VEC3", "\"min\":[-0.01,0,0],\"max\":[1,2,0]");
     // Normalized unsigned short: raw bounds 0..65535 map to 0..1.
     const std::vector<uint16_t> q = {0, 0, 0, 65535, 0, 0, 0, 65535, 0};
     const int quantized = b.add(q, test::kUShort, "VEC3",
                                 "\"normalized\":true,\"min\":[0,0,0],\"max\":[65535,65535,0]");
-    const int quantized_wrong = b.add(
-        q, test::kUShort, "VEC3", "\"normalized\":true,\"min\":[0,0,0],\"max\":[1,1,0]");
+    const int quantized_wrong =
+        b.add(q, test::kUShort, "VEC3", "\"normalized\":true,\"min\":[0,0,0],\"max\":[1,1,0]");
     const std::string path = b.write(
         dir, "wrong.gltf",
         primitives_scene({position_prim(rounded), position_prim(low_max), position_prim(loose_min),
@@ -146,14 +146,13 @@ TEST(GltfMeshChecks, PartialAndEmptyPrimitivesAreOneWarningEach) {
     GltfBuilder b;
     const int pos = b.add(kTriangle, test::kFloat, "VEC3");
     std::vector<std::string> prims;
-    for (const std::vector<uint16_t>& idx : {std::vector<uint16_t>{0, 1, 2, 0},
-                                             std::vector<uint16_t>{0, 1, 2, 0, 1},
-                                             std::vector<uint16_t>{0, 1}})
-        prims.push_back("{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
-                        "},\"indices\":" + std::to_string(b.add(idx, test::kUShort, "SCALAR")) +
-                        "}");
-    const std::string path = b.write(dir, "partial.gltf", primitives_scene(prims),
-                                     test::BufferStorage::DataUri);
+    for (const std::vector<uint16_t>& idx :
+         {std::vector<uint16_t>{0, 1, 2, 0}, std::vector<uint16_t>{0, 1, 2, 0, 1},
+          std::vector<uint16_t>{0, 1}})
+        prims.push_back("{\"attributes\":{\"POSITION\":" + std::to_string(pos) + "},\"indices\":" +
+                        std::to_string(b.add(idx, test::kUShort, "SCALAR")) + "}");
+    const std::string path =
+        b.write(dir, "partial.gltf", primitives_scene(prims), test::BufferStorage::DataUri);
     Scene s;
     const std::string log = warnings_of(path, &s);
     EXPECT_EQ(count(log, "warning: "), 2u) << log;
@@ -208,6 +207,27 @@ TEST(GltfMeshChecks, LoadedMeshesAreHeldOnceAndSharedWithEmbree) {
     EXPECT_LE(mesh_memory_bytes(s), exact + 64);
     const EmbreeAccel accel(s);
     EXPECT_EQ(accel.copied_bytes(), 0u);
+}
+
+// Draco-decoded positions (lossy) are not held to the file's bounds: encoders write the
+// bounds of the values before quantisation. Their absence is still reported.
+TEST(GltfMeshChecks, LossyPositionsAreNotHeldToTheirBounds) {
+    tinygltf::Model model;
+    model.accessors.resize(2);
+    model.accessors[0].minValues = {0, 0, 0};
+    model.accessors[0].maxValues = {1, 1, 1};
+    const GltfContext ctx{model, "draco.glb"};
+    const std::vector<Vec3> quantised = {{0, 0, 0}, {1.001f, 1, 1}};  // 1e-3 off
+    for (const bool lossy : {true, false}) {
+        MeshChecks checks(ctx);
+        checks.check_position_bounds(0, quantised, lossy);
+        checks.check_position_bounds(1, quantised, lossy);  // no bounds
+        testing::internal::CaptureStderr();
+        checks.report();
+        const std::string log = testing::internal::GetCapturedStderr();
+        EXPECT_EQ(count(log, "1 POSITION accessor(s) have no min/max"), 1u) << log;
+        EXPECT_EQ(count(log, "disagrees with their data"), lossy ? 0u : 1u) << log;
+    }
 }
 
 }  // namespace

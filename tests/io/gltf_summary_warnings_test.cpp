@@ -144,12 +144,12 @@ TEST(GltfSummaryWarnings, SingularNodesAreOneWarning) {
     test::GltfBuilder b;
     b.add<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
     const std::string zero = "\"mesh\":0,\"scale\":[0,0,0]";
-    const std::string path = b.write(
-        dir, "hidden.gltf",
-        "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}],\"nodes\":[{" +
-            zero + ",\"children\":[3]},{" + zero + "},{\"mesh\":0},{" + zero + "},{" + zero +
-            "}],\"scenes\":[{\"nodes\":[0,1,2,4]}]",
-        test::BufferStorage::DataUri);
+    const std::string path =
+        b.write(dir, "hidden.gltf",
+                "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}],\"nodes\":[{" +
+                    zero + ",\"children\":[3]},{" + zero + "},{\"mesh\":0},{" + zero + "},{" +
+                    zero + "}],\"scenes\":[{\"nodes\":[0,1,2,4]}]",
+                test::BufferStorage::DataUri);
     Scene s;
     testing::internal::CaptureStderr();
     s = load_gltf(path);
@@ -179,7 +179,8 @@ TEST(GltfSummaryWarnings, InstancedDeformedMeshesAreOneWarning) {
         dir, "instanced_morph.gltf",
         "\"extensionsUsed\":[\"EXT_mesh_gpu_instancing\"],\"meshes\":[{\"primitives\":[{"
         "\"attributes\":{\"POSITION\":0},\"targets\":[{\"POSITION\":1}]}],\"weights\":[1]}],"
-        "\"nodes\":[" + instanced + "," + instanced + "],\"scenes\":[{\"nodes\":[0,1]}]",
+        "\"nodes\":[" +
+            instanced + "," + instanced + "],\"scenes\":[{\"nodes\":[0,1]}]",
         test::BufferStorage::DataUri);
     const std::string log = warnings_of(path);
     EXPECT_EQ(count(log, "warning: "), 1u) << log;
