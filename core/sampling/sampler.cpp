@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/sampling/hash.h"
+#include "core/sampling/zsobol_sampler.h"
 
 namespace penumbra {
 
@@ -147,6 +148,8 @@ std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t s
             return std::make_unique<StratifiedSampler>(spp, seed);
         case SamplerType::Sobol:
             return std::make_unique<SobolSampler>(spp, seed);
+        case SamplerType::ZSobol:
+            return std::make_unique<ZSobolSampler>(spp, seed);
     }
     throw std::invalid_argument("unknown sampler type");
 }
@@ -155,8 +158,9 @@ SamplerType parse_sampler_type(const std::string& name) {
     if (name == "independent") return SamplerType::Independent;
     if (name == "stratified") return SamplerType::Stratified;
     if (name == "sobol") return SamplerType::Sobol;
+    if (name == "zsobol") return SamplerType::ZSobol;
     throw std::invalid_argument("unknown sampler '" + name +
-                                "' (expected independent, stratified or sobol)");
+                                "' (expected independent, stratified, sobol or zsobol)");
 }
 
 }  // namespace penumbra

@@ -107,9 +107,9 @@ uint32_t owen_scramble(uint32_t v, uint32_t seed);
 // "Correlated Multi-Jittered Sampling", the cycle-walking hash permutation).
 uint32_t permutation_element(uint32_t i, uint32_t n, uint32_t key);
 
-enum class SamplerType { Independent, Stratified, Sobol };
+enum class SamplerType { Independent, Stratified, Sobol, ZSobol };
 std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t seed);
-// "independent" | "stratified" | "sobol"; throws std::invalid_argument otherwise.
+// "independent" | "stratified" | "sobol" | "zsobol"; throws std::invalid_argument otherwise.
 SamplerType parse_sampler_type(const std::string& name);
 
 }  // namespace penumbra

@@ -1,0 +1,130 @@
+#include "core/sampling/zsobol_sampler.h"
+
+#include <algorithm>
+
+#include "core/sampling/hash.h"
+
+namespace penumbra {
+
+namespace {
+
+// The 24 permutations of four digits.
+constexpr uint8_t kPermutations[24][4] = {
+    {0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 1, 3}, {0, 2, 3, 1}, {0, 3, 2, 1}, {0, 3, 1, 2},
+    {1, 0, 2, 3}, {1, 0, 3, 2}, {1, 2, 0, 3}, {1, 2, 3, 0}, {1, 3, 2, 0}, {1, 3, 0, 2},
+    {2, 1, 0, 3}, {2, 1, 3, 0}, {2, 0, 1, 3}, {2, 0, 3, 1}, {2, 3, 0, 1}, {2, 3, 1, 0},
+    {3, 1, 2, 0}, {3, 1, 0, 2}, {3, 2, 1, 0}, {3, 2, 0, 1}, {3, 0, 2, 1}, {3, 0, 1, 2}};
+
+// A cheap 64-to-32-bit hash for choosing digit permutations: only its top bits are used.
+inline uint32_t digit_hash(uint64_t v) {
+    v *= 0xd6e8feb86659fd93ULL;
+    v ^= v >> 32;
+    v *= 0xd6e8feb86659fd93ULL;
+    return static_cast<uint32_t>(v >> 32);
+}
+
+inline uint32_t reverse_bits(uint32_t i) {
+    i = (i << 16) | (i >> 16);
+    i = ((i & 0x00ff00ffu) << 8) | ((i & 0xff00ff00u) >> 8);
+    i = ((i & 0x0f0f0f0fu) << 4) | ((i & 0xf0f0f0f0u) >> 4);
+    i = ((i & 0x33333333u) << 2) | ((i & 0xccccccccu) >> 2);
+    i = ((i & 0x55555555u) << 1) | ((i & 0xaaaaaaaau) >> 1);
+    return i;
+}
+
+// 24 bits in [0, 1): the largest float below 1 is the top of the range.
+inline float to_unit_float(uint32_t bits) { return (bits >> 8) * 0x1p-24f; }
+
+inline uint32_t part_bits(uint32_t x) {
+    x &= 0xffffu;
+    x = (x | (x << 8)) & 0x00ff00ffu;
+    x = (x | (x << 4)) & 0x0f0f0f0fu;
+    x = (x | (x << 2)) & 0x33333333u;
+    x = (x | (x << 1)) & 0x55555555u;
+    return x;
+}
+
+}  // namespace
+
+uint32_t morton_2d(uint32_t x, uint32_t y) { return part_bits(x) | (part_bits(y) << 1); }
+
+uint32_t sobol_second_dimension_reversed(uint32_t i) {
+    // Bit k of i is the coefficient of z^k in I(z); the result is I(1 + y), computed one
+    // bit of k at a time: a term z^k with bit s set also lands on z^(k - 2^s).
+    i ^= (i & 0xaaaaaaaau) >> 1;
+    i ^= (i & 0xccccccccu) >> 2;
+    i ^= (i & 0xf0f0f0f0u) >> 4;
+    i ^= (i & 0xff00ff00u) >> 8;
+    i ^= (i & 0xffff0000u) >> 16;
+    return i;
+}
+
+uint32_t owen_hash_reversed(uint32_t v, uint32_t seed) {
+    // Multiplications and additions carry only towards higher bits, so bit k depends on
+    // bits 0..k alone: a nested scramble of the fraction's leading digits.
+    v ^= v * 0x3d20adeau;
+    v += seed;
+    v *= (seed >> 16) | 1u;
+    v ^= v * 0x05526c56u;
+    v ^= v * 0x53a22864u;
+    return v;
+}
+
+ZSobolSampler::ZSobolSampler(uint32_t spp, uint64_t seed) : Sampler(spp, seed) {
+    while ((1u << m_log2_spp) < std::max(spp, 1u)) ++m_log2_spp;
+    // 16 levels of pixels and ceil(log2(spp) / 2) of samples (an odd log2 leaves one
+    // base-2 digit at the bottom).
+    m_digits = 16 + (m_log2_spp + 1) / 2;
+    m_seed_hash = static_cast<uint32_t>(mix_bits(seed ^ 0x250b01u));
+}
+
+void ZSobolSampler::start_pixel_sample(PixelCoord p, uint32_t sample_index) {
+    m_morton = (uint64_t(morton_2d(uint32_t(p.x), uint32_t(p.y))) << m_log2_spp) | sample_index;
+    m_dimension = 0;
+}
+
+uint64_t ZSobolSampler::sobol_index(uint32_t dimension) const {
+    // Ahmed & Wonka's hierarchical shuffle: each base-4 digit is permuted by a choice that
+    // depends on the digits above it and the dimension, so sibling quads of pixels (and a
+    // pixel's samples) take their blocks of the sequence in a random order.
+    const uint64_t salt = (uint64_t(m_seed_hash) << 32) ^ (0x9e3779b97f4a7c15ULL * (dimension + 1));
+    const bool odd = m_log2_spp & 1;
+    uint64_t index = 0;
+    for (int i = m_digits - 1; i >= int(odd); --i) {
+        const int shift = 2 * i - int(odd);
+        const uint32_t digit = (m_morton >> shift) & 3;
+        const uint64_t higher = m_morton >> (shift + 2);
+        // (h * 24) >> 32 picks one of 24 permutations without a division.
+        const uint32_t p = uint32_t((uint64_t(digit_hash(higher ^ salt)) * 24) >> 32);
+        index |= uint64_t(kPermutations[p][digit]) << shift;
+    }
+    if (odd) index |= (m_morton & 1) ^ (digit_hash((m_morton >> 1) ^ salt) >> 31);
+    return index;
+}
+
+uint64_t ZSobolSampler::scramble_seed(uint64_t index) const {
+    return mix_bits(((uint64_t(m_seed_hash) << 32) | m_dimension) ^
+                    ((index >> 32) * 0x9e3779b97f4a7c15ULL));
+}
+
+float ZSobolSampler::get_1d() {
+    const uint64_t index = sobol_index(m_dimension);
+    // Index bits from 32 up would only touch fraction bits below 2^-32: they select the
+    // scramble instead, so every 2^32-block of the sequence is scrambled on its own.
+    const uint32_t h = static_cast<uint32_t>(scramble_seed(index));
+    ++m_dimension;
+    // Dimension 0 of Sobol is van der Corput: bit-reversed, it is the index itself.
+    return to_unit_float(reverse_bits(owen_hash_reversed(uint32_t(index), h)));
+}
+
+Vec2 ZSobolSampler::get_2d() {
+    const uint64_t index = sobol_index(m_dimension);
+    const uint64_t h = scramble_seed(index);
+    m_dimension += 2;
+    const uint32_t i = uint32_t(index);
+    return {to_unit_float(reverse_bits(owen_hash_reversed(i, uint32_t(h)))),
+            to_unit_float(reverse_bits(
+                owen_hash_reversed(sobol_second_dimension_reversed(i), uint32_t(h >> 32))))};
+}
+
+}  // namespace penumbra
