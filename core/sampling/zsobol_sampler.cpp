@@ -79,25 +79,60 @@ ZSobolSampler::ZSobolSampler(uint32_t spp, uint64_t seed) : Sampler(spp, seed) {
 }
 
 void ZSobolSampler::start_pixel_sample(PixelCoord p, uint32_t sample_index) {
-    m_morton = (uint64_t(morton_2d(uint32_t(p.x), uint32_t(p.y))) << m_log2_spp) | sample_index;
+    const uint64_t pixel = morton_2d(uint32_t(p.x), uint32_t(p.y));
+    if (pixel != m_pixel_morton) {
+        m_pixel_morton = pixel;
+        m_cached_valid.fill(false);
+    }
+    m_morton = (pixel << m_log2_spp) | sample_index;
     m_dimension = 0;
 }
 
-uint64_t ZSobolSampler::sobol_index(uint32_t dimension) const {
-    // Ahmed & Wonka's hierarchical shuffle: each base-4 digit is permuted by a choice that
-    // depends on the digits above it and the dimension, so sibling quads of pixels (and a
-    // pixel's samples) take their blocks of the sequence in a random order.
-    const uint64_t salt = (uint64_t(m_seed_hash) << 32) ^ (0x9e3779b97f4a7c15ULL * (dimension + 1));
-    const bool odd = m_log2_spp & 1;
+namespace {
+
+// Ahmed & Wonka's hierarchical shuffle of the base-4 digits of `morton` from digit
+// `last` up to digit `first`: each digit is permuted by a choice that depends on the
+// digits above it and the dimension's salt, so sibling quads of pixels (and a pixel's
+// samples) take their blocks of the sequence in a random order. An odd log2(spp) shifts
+// the digits by one bit (the bottom one is base 2).
+inline uint64_t shuffle_digits(uint64_t morton, uint64_t salt, int first, int last, int odd) {
     uint64_t index = 0;
-    for (int i = m_digits - 1; i >= int(odd); --i) {
-        const int shift = 2 * i - int(odd);
-        const uint32_t digit = (m_morton >> shift) & 3;
-        const uint64_t higher = m_morton >> (shift + 2);
+    for (int i = first; i >= last; --i) {
+        const int shift = 2 * i - odd;
+        const uint32_t digit = (morton >> shift) & 3;
+        const uint64_t higher = morton >> (shift + 2);
         // (h * 24) >> 32 picks one of 24 permutations without a division.
         const uint32_t p = uint32_t((uint64_t(digit_hash(higher ^ salt)) * 24) >> 32);
         index |= uint64_t(kPermutations[p][digit]) << shift;
     }
+    return index;
+}
+
+}  // namespace
+
+uint64_t ZSobolSampler::pixel_digits(uint32_t dimension) const {
+    const uint64_t salt = (uint64_t(m_seed_hash) << 32) ^ (0x9e3779b97f4a7c15ULL * (dimension + 1));
+    const int odd = m_log2_spp & 1;
+    // Digits whose bits all lie above the sample index: shift 2 i - odd >= log2(spp).
+    const int first_pixel_digit = (m_log2_spp + odd) / 2;
+    return shuffle_digits(m_morton, salt, m_digits - 1, first_pixel_digit, odd);
+}
+
+uint64_t ZSobolSampler::sobol_index(uint32_t dimension) {
+    const uint64_t salt = (uint64_t(m_seed_hash) << 32) ^ (0x9e3779b97f4a7c15ULL * (dimension + 1));
+    const int odd = m_log2_spp & 1;
+    const int first_pixel_digit = (m_log2_spp + odd) / 2;
+    uint64_t index;
+    if (dimension < kCachedDimensions) {
+        if (!m_cached_valid[dimension]) {
+            m_cached[dimension] = pixel_digits(dimension);
+            m_cached_valid[dimension] = true;
+        }
+        index = m_cached[dimension];
+    } else {
+        index = pixel_digits(dimension);
+    }
+    index |= shuffle_digits(m_morton, salt, first_pixel_digit - 1, odd, odd);
     if (odd) index |= (m_morton & 1) ^ (digit_hash((m_morton >> 1) ^ salt) >> 31);
     return index;
 }

@@ -4,6 +4,7 @@
 // Ahmed & Wonka 2020, with Burley 2020's hash-based Owen scrambling).
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "core/sampling/sampler.h"
@@ -23,11 +24,20 @@ public:
     std::unique_ptr<Sampler> clone() const override {
         return std::make_unique<ZSobolSampler>(*this);
     }
-    // The Sobol index that dimension `dimension` of the current sample uses, for tests:
-    // the Morton index with its base-4 digits shuffled per dimension.
-    uint64_t sobol_index(uint32_t dimension) const;
+    // The Sobol index that dimension `dimension` of the current sample uses (public for
+    // tests): the Morton index with its base-4 digits shuffled per dimension.
+    uint64_t sobol_index(uint32_t dimension);
 
 private:
+    // The shuffled digits above the sample index depend on the pixel and the dimension
+    // alone: they are cached for the first kCachedDimensions dimensions of the current
+    // pixel, which the render loop visits for all its samples in a row. A cache, so
+    // values do not depend on the order of calls.
+    static constexpr uint32_t kCachedDimensions = 64;
+    uint64_t pixel_digits(uint32_t dimension) const;
+    uint64_t m_pixel_morton = ~0ull;  // the pixel the cache is for
+    std::array<uint64_t, kCachedDimensions> m_cached{};
+    std::array<bool, kCachedDimensions> m_cached_valid{};
     // The Owen scrambles' seeds for the current dimension (two 32-bit halves).
     uint64_t scramble_seed(uint64_t index) const;
     int m_log2_spp = 0;
