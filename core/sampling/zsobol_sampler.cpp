@@ -44,6 +44,25 @@ inline uint32_t part_bits(uint32_t x) {
     return x;
 }
 
+// Ahmed & Wonka's hierarchical shuffle of the base-4 digits of `morton` from digit
+// `last` up to digit `first`: each digit is permuted by a choice that depends on the
+// digits above it and the dimension's salt, so sibling quads of pixels (and a pixel's
+// samples) take their blocks of the sequence in a random order. An odd log2(spp) shifts
+// the digits by one bit (the bottom one is base 2).
+inline uint64_t shuffle_digits(uint64_t morton, uint64_t salt, int first, int last, int odd) {
+    uint64_t index = 0;
+    for (int i = first; i >= last; --i) {
+        const int shift = 2 * i - odd;
+        const uint32_t digit = (morton >> shift) & 3;
+        const uint64_t higher = morton >> (shift + 2);
+        // (h * 24) >> 32 picks one of 24 permutations without a division.
+        const uint32_t p = uint32_t((uint64_t(digit_hash(higher ^ salt)) * 24) >> 32);
+        index |= uint64_t(kPermutations[p][digit]) << shift;
+    }
+    return index;
+}
+
+
 }  // namespace
 
 uint32_t morton_2d(uint32_t x, uint32_t y) { return part_bits(x) | (part_bits(y) << 1); }
@@ -76,6 +95,9 @@ ZSobolSampler::ZSobolSampler(uint32_t spp, uint64_t seed) : Sampler(spp, seed) {
     // base-2 digit at the bottom).
     m_digits = 16 + (m_log2_spp + 1) / 2;
     m_seed_hash = static_cast<uint32_t>(mix_bits(seed ^ 0x250b01u));
+    const int odd = m_log2_spp & 1, top = first_pixel_digit() + kLowPixelDigits;
+    for (uint32_t d = 0; d < kCachedDimensions; ++d)
+        m_top[d] = shuffle_digits(0, salt(d), m_digits - 1, top, odd);
 }
 
 void ZSobolSampler::start_pixel_sample(PixelCoord p, uint32_t sample_index) {
@@ -88,75 +110,68 @@ void ZSobolSampler::start_pixel_sample(PixelCoord p, uint32_t sample_index) {
     m_dimension = 0;
 }
 
-namespace {
 
-// Ahmed & Wonka's hierarchical shuffle of the base-4 digits of `morton` from digit
-// `last` up to digit `first`: each digit is permuted by a choice that depends on the
-// digits above it and the dimension's salt, so sibling quads of pixels (and a pixel's
-// samples) take their blocks of the sequence in a random order. An odd log2(spp) shifts
-// the digits by one bit (the bottom one is base 2).
-inline uint64_t shuffle_digits(uint64_t morton, uint64_t salt, int first, int last, int odd) {
-    uint64_t index = 0;
-    for (int i = first; i >= last; --i) {
-        const int shift = 2 * i - odd;
-        const uint32_t digit = (morton >> shift) & 3;
-        const uint64_t higher = morton >> (shift + 2);
-        // (h * 24) >> 32 picks one of 24 permutations without a division.
-        const uint32_t p = uint32_t((uint64_t(digit_hash(higher ^ salt)) * 24) >> 32);
-        index |= uint64_t(kPermutations[p][digit]) << shift;
-    }
-    return index;
+uint64_t ZSobolSampler::salt(uint32_t dimension) const {
+    return (uint64_t(m_seed_hash) << 32) ^ (0x9e3779b97f4a7c15ULL * (dimension + 1));
 }
 
-}  // namespace
+int ZSobolSampler::first_pixel_digit() const {
+    // The lowest digit whose bits all lie above the sample index: 2 i - odd >= log2(spp).
+    return (m_log2_spp + (m_log2_spp & 1)) / 2;
+}
 
 uint64_t ZSobolSampler::pixel_digits(uint32_t dimension) const {
-    const uint64_t salt = (uint64_t(m_seed_hash) << 32) ^ (0x9e3779b97f4a7c15ULL * (dimension + 1));
-    const int odd = m_log2_spp & 1;
-    // Digits whose bits all lie above the sample index: shift 2 i - odd >= log2(spp).
-    const int first_pixel_digit = (m_log2_spp + odd) / 2;
-    return shuffle_digits(m_morton, salt, m_digits - 1, first_pixel_digit, odd);
+    const int odd = m_log2_spp & 1, first = first_pixel_digit();
+    // Below 256 x 256 pixels the top 8 pixel digits and all above them are 0, so their
+    // shuffle depends on the dimension alone (m_top, the same function evaluated once).
+    const int top = first + kLowPixelDigits;
+    if (dimension < kCachedDimensions && (m_morton >> (2 * top - odd)) == 0)
+        return m_top[dimension] | shuffle_digits(m_morton, salt(dimension), top - 1, first, odd);
+    return shuffle_digits(m_morton, salt(dimension), m_digits - 1, first, odd);
 }
 
-uint64_t ZSobolSampler::sobol_index(uint32_t dimension) {
-    const uint64_t salt = (uint64_t(m_seed_hash) << 32) ^ (0x9e3779b97f4a7c15ULL * (dimension + 1));
+uint64_t ZSobolSampler::scramble_seed(uint32_t dimension, uint64_t pixel_digits) const {
+    // Index bits from 32 up (pixel digits only) would only touch fraction bits below
+    // 2^-32: they select the scramble instead, so every 2^32-block of the sequence is
+    // scrambled on its own.
+    return mix_bits(((uint64_t(m_seed_hash) << 32) | dimension) ^
+                    ((pixel_digits >> 32) * 0x9e3779b97f4a7c15ULL));
+}
+
+uint64_t ZSobolSampler::sobol_index(uint32_t dimension, uint64_t* scramble) {
     const int odd = m_log2_spp & 1;
-    const int first_pixel_digit = (m_log2_spp + odd) / 2;
-    uint64_t index;
+    uint64_t index, seed;
     if (dimension < kCachedDimensions) {
         if (!m_cached_valid[dimension]) {
             m_cached[dimension] = pixel_digits(dimension);
+            m_cached_scramble[dimension] = scramble_seed(dimension, m_cached[dimension]);
             m_cached_valid[dimension] = true;
         }
         index = m_cached[dimension];
+        seed = m_cached_scramble[dimension];
     } else {
         index = pixel_digits(dimension);
+        seed = scramble_seed(dimension, index);
     }
-    index |= shuffle_digits(m_morton, salt, first_pixel_digit - 1, odd, odd);
-    if (odd) index |= (m_morton & 1) ^ (digit_hash((m_morton >> 1) ^ salt) >> 31);
+    const uint64_t s = salt(dimension);
+    index |= shuffle_digits(m_morton, s, first_pixel_digit() - 1, odd, odd);
+    if (odd) index |= (m_morton & 1) ^ (digit_hash((m_morton >> 1) ^ s) >> 31);
+    if (scramble) *scramble = seed;
     return index;
 }
 
-uint64_t ZSobolSampler::scramble_seed(uint64_t index) const {
-    return mix_bits(((uint64_t(m_seed_hash) << 32) | m_dimension) ^
-                    ((index >> 32) * 0x9e3779b97f4a7c15ULL));
-}
-
 float ZSobolSampler::get_1d() {
-    const uint64_t index = sobol_index(m_dimension);
-    // Index bits from 32 up would only touch fraction bits below 2^-32: they select the
-    // scramble instead, so every 2^32-block of the sequence is scrambled on its own.
-    const uint32_t h = static_cast<uint32_t>(scramble_seed(index));
+    uint64_t h;
+    const uint64_t index = sobol_index(m_dimension, &h);
     ++m_dimension;
     // Dimension 0 of Sobol is van der Corput: bit-reversed, it is the index itself.
-    return to_unit_float(reverse_bits(owen_hash_reversed(uint32_t(index), h)));
+    return to_unit_float(reverse_bits(owen_hash_reversed(uint32_t(index), uint32_t(h))));
 }
 
 Vec2 ZSobolSampler::get_2d() {
-    const uint64_t index = sobol_index(m_dimension);
-    const uint64_t h = scramble_seed(index);
+    uint64_t h;
+    const uint32_t i = uint32_t(sobol_index(m_dimension, &h));
     m_dimension += 2;
-    const uint32_t i = uint32_t(index);
     return {to_unit_float(reverse_bits(owen_hash_reversed(i, uint32_t(h)))),
             to_unit_float(reverse_bits(
                 owen_hash_reversed(sobol_second_dimension_reversed(i), uint32_t(h >> 32))))};

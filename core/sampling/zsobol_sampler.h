@@ -25,21 +25,26 @@ public:
         return std::make_unique<ZSobolSampler>(*this);
     }
     // The Sobol index that dimension `dimension` of the current sample uses (public for
-    // tests): the Morton index with its base-4 digits shuffled per dimension.
-    uint64_t sobol_index(uint32_t dimension);
+    // tests): the Morton index with its base-4 digits shuffled per dimension; *scramble,
+    // if given, receives the Owen scrambles' seeds (two 32-bit halves).
+    uint64_t sobol_index(uint32_t dimension, uint64_t* scramble = nullptr);
 
 private:
     // The shuffled digits above the sample index depend on the pixel and the dimension
-    // alone: they are cached for the first kCachedDimensions dimensions of the current
-    // pixel, which the render loop visits for all its samples in a row. A cache, so
-    // values do not depend on the order of calls.
+    // alone: they (and the scramble seeds) are cached for the first kCachedDimensions
+    // dimensions of the current pixel, whose samples the render loop draws in a row. A
+    // cache: values do not depend on the order of calls.
     static constexpr uint32_t kCachedDimensions = 64;
+    static constexpr int kLowPixelDigits = 8;  // 256 x 256 pixels
+    uint64_t salt(uint32_t dimension) const;
+    int first_pixel_digit() const;
     uint64_t pixel_digits(uint32_t dimension) const;
+    uint64_t scramble_seed(uint32_t dimension, uint64_t pixel_digits) const;
     uint64_t m_pixel_morton = ~0ull;  // the pixel the cache is for
-    std::array<uint64_t, kCachedDimensions> m_cached{};
+    std::array<uint64_t, kCachedDimensions> m_cached{}, m_cached_scramble{};
     std::array<bool, kCachedDimensions> m_cached_valid{};
-    // The Owen scrambles' seeds for the current dimension (two 32-bit halves).
-    uint64_t scramble_seed(uint64_t index) const;
+    // The shuffled pixel digits from kLowPixelDigits up for a pixel below 256 x 256.
+    std::array<uint64_t, kCachedDimensions> m_top{};
     int m_log2_spp = 0;
     int m_digits = 0;            // base-4 digits of the Morton index (pixel and sample)
     uint32_t m_seed_hash = 0;    // folded into every per-dimension hash

@@ -90,6 +90,38 @@ TEST(ZSobolSampler, EachPixelTakesOneAlignedBlockOfTheSequence) {
     }
 }
 
+// Pixels below 256 x 256 take cached shortcuts (the shuffled top digits, the pixel's
+// digits per dimension); those above do not. Together, 512 x 512 pixels at 1 spp must
+// still take distinct indices that agree above bit 18: one bijection over the quadtree.
+TEST(ZSobolSampler, CachedAndDirectDigitsFormOneShuffle) {
+    for (uint32_t dim : {0u, 5u, 63u, 64u}) {
+        ZSobolSampler s(1, 21);
+        std::vector<bool> seen(1u << 18, false);
+        uint64_t top = 0;
+        bool first = true;
+        size_t distinct = 0;
+        for (int y = 0; y < 512; ++y)
+            for (int x = 0; x < 512; ++x) {
+                s.start_pixel_sample({x, y}, 0);
+                const uint64_t index = s.sobol_index(dim);
+                if (first) top = index >> 18, first = false;
+                ASSERT_EQ(index >> 18, top) << x << " " << y << " dim " << dim;
+                distinct += !seen[index & 0x3ffff];
+                seen[index & 0x3ffff] = true;
+            }
+        EXPECT_EQ(distinct, size_t(1) << 18) << "dim " << dim;
+    }
+    // The cache only remembers: a fresh sampler and a warm one agree for every sample.
+    ZSobolSampler warm(16, 4);
+    for (uint32_t i = 0; i < 16; ++i)
+        for (PixelCoord p : {PixelCoord{3, 4}, PixelCoord{300, 4}}) {
+            ZSobolSampler cold(16, 4);
+            warm.start_pixel_sample(p, i);
+            cold.start_pixel_sample(p, i);
+            for (uint32_t d : {7u, 0u, 70u}) EXPECT_EQ(warm.sobol_index(d), cold.sobol_index(d));
+        }
+}
+
 // For power-of-two spp every 2D pair of a pixel's samples is a (0,m,2)-net, also for
 // odd m; and a 2x2 quad of pixels together forms a (0,m+2,2)-net (the Z order).
 TEST(ZSobolSampler, PixelsAndPixelQuadsFormZeroMTwoNets) {
