@@ -50,17 +50,19 @@ StratifiedSampler::StratifiedSampler(uint32_t spp, uint64_t seed) : Sampler(spp,
     while (m_nx > 1 && spp % m_nx != 0) --m_nx;
     m_nx = std::max(m_nx, 1u);
     m_ny = spp / m_nx;
+    m_stream = hash_values(seed, 2);
 }
 
 void StratifiedSampler::start_pixel_sample(PixelCoord p, uint32_t sample_index) {
-    m_pixel = p;
+    m_pixel_hash = hash_values(m_seed, p.x, p.y);
     m_index = sample_index;
     m_dimension = 0;
-    m_rng.seed(hash_values(m_seed, p.x, p.y, sample_index), hash_values(m_seed, 2));
+    m_rng.seed(hash_combine(m_pixel_hash, sample_index), m_stream);
 }
 
 uint64_t StratifiedSampler::dimension_hash() const {
-    return hash_values(m_seed, m_pixel.x, m_pixel.y, m_dimension);
+    // hash_values(seed, x, y, dimension): the fold's prefix is the pixel's hash.
+    return hash_combine(m_pixel_hash, m_dimension);
 }
 
 float StratifiedSampler::get_1d() {
@@ -110,13 +112,14 @@ uint32_t owen_scramble(uint32_t v, uint32_t seed) {
 }
 
 void SobolSampler::start_pixel_sample(PixelCoord p, uint32_t sample_index) {
-    m_pixel = p;
+    m_pixel_hash = hash_values(m_seed, p.x, p.y);
     m_index = sample_index;
     m_dimension = 0;
 }
 
 uint64_t SobolSampler::dimension_hash() const {
-    return hash_values(m_seed, m_pixel.x, m_pixel.y, m_dimension, 0x50b01);
+    // hash_values(seed, x, y, dimension, 0x50b01), from the pixel's prefix.
+    return hash_combine(hash_combine(m_pixel_hash, m_dimension), 0x50b01);
 }
 
 namespace {

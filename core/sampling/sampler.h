@@ -69,7 +69,8 @@ public:
 private:
     uint64_t dimension_hash() const;
     uint32_t m_nx, m_ny;
-    PixelCoord m_pixel;
+    uint64_t m_pixel_hash = 0;  // hash_values(seed, x, y), the prefix of every dimension's
+    uint64_t m_stream = 0;      // the jitter's PCG stream, hash_values(seed, 2)
     uint32_t m_index = 0;
     uint32_t m_dimension = 0;
     Rng m_rng;
@@ -92,7 +93,7 @@ public:
 
 private:
     uint64_t dimension_hash() const;
-    PixelCoord m_pixel;
+    uint64_t m_pixel_hash = 0;  // hash_values(seed, x, y), the prefix of every dimension's
     uint32_t m_index = 0;
     uint32_t m_dimension = 0;
 };
