@@ -132,10 +132,12 @@ const CornellRays& cornell_rays() {
         for (int by = 0; by < n; by += 2)
             for (int bx = 0; bx < n; bx += 4)
                 for (int k = 0; k < 8; ++k) {
-                    const float x = bx + (k & 3) + rng.next_float(), y = by + (k >> 2) + rng.next_float();
+                    const float x = bx + (k & 3) + rng.next_float(),
+                                y = by + (k >> 2) + rng.next_float();
                     Ray ray;
                     ray.o = {0, 0, 3.9f};
-                    ray.d = normalize(Vec3((2 * x / n - 1) * tan_half, (1 - 2 * y / n) * tan_half, -1));
+                    ray.d =
+                        normalize(Vec3((2 * x / n - 1) * tan_half, (1 - 2 * y / n) * tan_half, -1));
                     r.camera.push_back(ray);
                 }
         const EmbreeAccel accel(scene_for(Which::Cornell));
@@ -204,8 +206,7 @@ void BM_ShadowRaysStream(benchmark::State& state) {
     size_t i = 0, blocked = 0;
     for (auto _ : state) {
         if (i + batch > rays.size()) i = 0;
-        accel.occluded_stream(&rays[i], batch, out.get(),
-                              state.range(1) != 0);
+        accel.occluded_stream(&rays[i], batch, out.get(), state.range(1) != 0);
         blocked += out[0];
         i += batch;
     }

@@ -279,12 +279,11 @@ void EmbreeAccel::intersect8(const Ray (&rays)[8], std::optional<Hit> (&hits)[8]
     }
 }
 
-void EmbreeAccel::occluded_stream(const Ray* rays, size_t n, bool* occluded,
-                                  bool coherent) const {
+void EmbreeAccel::occluded_stream(const Ray* rays, size_t n, bool* occluded, bool coherent) const {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
-    ctx.flags = coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
-                         : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    ctx.flags =
+        coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
     constexpr size_t kChunk = 256;
     RTCRay buffer[kChunk];
     for (size_t start = 0; start < n; start += kChunk) {

@@ -62,7 +62,6 @@ inline uint64_t shuffle_digits(uint64_t morton, uint64_t salt, int first, int la
     return index;
 }
 
-
 }  // namespace
 
 uint32_t morton_2d(uint32_t x, uint32_t y) { return part_bits(x) | (part_bits(y) << 1); }
@@ -109,7 +108,6 @@ void ZSobolSampler::start_pixel_sample(PixelCoord p, uint32_t sample_index) {
     m_morton = (pixel << m_log2_spp) | sample_index;
     m_dimension = 0;
 }
-
 
 uint64_t ZSobolSampler::salt(uint32_t dimension) const {
     return (uint64_t(m_seed_hash) << 32) ^ (0x9e3779b97f4a7c15ULL * (dimension + 1));

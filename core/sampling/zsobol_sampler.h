@@ -46,9 +46,9 @@ private:
     // The shuffled pixel digits from kLowPixelDigits up for a pixel below 256 x 256.
     std::array<uint64_t, kCachedDimensions> m_top{};
     int m_log2_spp = 0;
-    int m_digits = 0;            // base-4 digits of the Morton index (pixel and sample)
-    uint32_t m_seed_hash = 0;    // folded into every per-dimension hash
-    uint64_t m_morton = 0;       // Morton code of the pixel, then the sample index
+    int m_digits = 0;          // base-4 digits of the Morton index (pixel and sample)
+    uint32_t m_seed_hash = 0;  // folded into every per-dimension hash
+    uint64_t m_morton = 0;     // Morton code of the pixel, then the sample index
     uint32_t m_dimension = 0;
 };
 

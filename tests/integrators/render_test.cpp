@@ -137,8 +137,8 @@ TEST(Render, PassesAddUpToTheSameImageBitForBit) {
     RenderOptions opt;
     opt.spp = 7;
     opt.progress = false;
-    for (SamplerType type : {SamplerType::Independent, SamplerType::Stratified,
-                             SamplerType::Sobol, SamplerType::ZSobol}) {
+    for (SamplerType type : {SamplerType::Independent, SamplerType::Stratified, SamplerType::Sobol,
+                             SamplerType::ZSobol}) {
         opt.sampler = type;
         Film whole(24, 18), split(24, 18);
         ASSERT_TRUE(render_samples(ctx, camera, *integrator, opt, whole, 0, 7));

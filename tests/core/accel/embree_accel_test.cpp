@@ -82,14 +82,17 @@ TEST(EmbreeAccel, PacketsAndStreamsAgreeWithSingleRays) {
     const int mat = test::add_lambertian(scene, Spectrum(0.5f));
     const uint32_t cube = test::add_cube_object(scene, mat);
     test::add_instance(scene, cube, Transform::translate({-1, 0, 0}));
-    test::add_instance(scene, cube, Transform::trs({1, 0.3f, 0}, Quat{0, 0.38f, 0, 0.92f}, {1, 2, 1}));
+    test::add_instance(scene, cube,
+                       Transform::trs({1, 0.3f, 0}, Quat{0, 0.38f, 0, 0.92f}, {1, 2, 1}));
     EmbreeAccel accel(scene);
     Rng rng(5);
     std::vector<Ray> rays(8 * 64);
     for (Ray& r : rays) {
-        r.o = Vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f, rng.next_float() - 0.5f) * 6.0f;
+        r.o =
+            Vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f, rng.next_float() - 0.5f) * 6.0f;
         // Aimed near the cubes, so that about half the rays hit.
-        const Vec3 target(4 * rng.next_float() - 2, 2 * rng.next_float() - 1, 2 * rng.next_float() - 1);
+        const Vec3 target(4 * rng.next_float() - 2, 2 * rng.next_float() - 1,
+                          2 * rng.next_float() - 1);
         r.d = normalize(target - r.o);
         r.tmax = rng.next_float() < 0.3f ? 1.5f : std::numeric_limits<float>::infinity();
     }

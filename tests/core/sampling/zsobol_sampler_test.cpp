@@ -27,8 +27,9 @@ bool is_zero_m_two_net(const std::vector<Vec2>& pts, std::string* why) {
         std::set<int> cells;
         for (const Vec2& p : pts) cells.insert(int(p.x * nx) * ny + int(p.y * ny));
         if (cells.size() != pts.size()) {
-            *why = std::to_string(nx) + "x" + std::to_string(ny) + " intervals: " +
-                   std::to_string(cells.size()) + " of " + std::to_string(pts.size());
+            *why = std::to_string(nx) + "x" + std::to_string(ny) +
+                   " intervals: " + std::to_string(cells.size()) + " of " +
+                   std::to_string(pts.size());
             return false;
         }
     }
@@ -240,8 +241,8 @@ TEST(ZSobolSampler, PrefixesOfTheBudgetAreUnbiased) {
                     }
             return sum / count;
         });
-        EXPECT_TRUE(test::within(e, 0.21)) << "prefix " << prefix << ": " << e.mean << " +- "
-                                           << e.std_error;
+        EXPECT_TRUE(test::within(e, 0.21))
+            << "prefix " << prefix << ": " << e.mean << " +- " << e.std_error;
         // Power: a bias of 0.005 (2.4%) would be four standard errors.
         EXPECT_LT(e.std_error, 0.00125) << "prefix " << prefix;
     }
