@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/error.h"
 #include "core/sampling/hash.h"
 
 namespace penumbra {
@@ -100,6 +101,10 @@ ZSobolSampler::ZSobolSampler(uint32_t spp, uint64_t seed) : Sampler(spp, seed) {
 }
 
 void ZSobolSampler::start_pixel_sample(PixelCoord p, uint32_t sample_index) {
+    // An index past the budget would overwrite the pixel's digits and repeat another
+    // pixel's samples.
+    CHECK(uint64_t(sample_index) >> m_log2_spp == 0,
+          << "sample " << sample_index << " of a " << m_spp << " spp sampler");
     const uint64_t pixel = morton_2d(uint32_t(p.x), uint32_t(p.y));
     if (pixel != m_pixel_morton) {
         m_pixel_morton = pixel;

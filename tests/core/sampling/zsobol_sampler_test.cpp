@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "tests/support/chi2.h"
 #include "tests/support/estimate.h"
 
@@ -246,6 +247,12 @@ TEST(ZSobolSampler, PrefixesOfTheBudgetAreUnbiased) {
         // Power: a bias of 0.005 (2.4%) would be four standard errors.
         EXPECT_LT(e.std_error, 0.00125) << "prefix " << prefix;
     }
+}
+
+TEST(ZSobolSampler, IndicesBeyondTheBudgetAreRejected) {
+    ZSobolSampler s(12, 1);  // room for 16
+    EXPECT_NO_THROW(s.start_pixel_sample({0, 0}, 15));
+    EXPECT_THROW(s.start_pixel_sample({0, 0}, 16), InternalError);
 }
 
 TEST(ZSobolSampler, NeighbouringPixelsGetDifferentSamples) {
