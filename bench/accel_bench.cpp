@@ -1,6 +1,7 @@
 // Accelerator benchmarks: closest-hit throughput on incoherent rays (Embree against our
-// BVH with each split and the grid, one thread) and build time of a 1M-triangle mesh on
-// one core. Figures and commands: docs/performance.md.
+// BVH with each split and the grid, one thread), Embree's packets and streams against
+// single rays on the Cornell box's camera and shadow rays, and build time of a
+// 1M-triangle mesh on one core. Figures and commands: docs/performance.md.
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
@@ -9,6 +10,7 @@
 #include <memory>
 
 #include "core/accel/accel.h"
+#include "core/accel/embree_accel.h"
 #include "core/sampling/rng.h"
 #include "core/sampling/warp.h"
 #include "io/gltf_loader.h"
@@ -113,6 +115,105 @@ ACCEL_BENCH(Soup, Grid, soup100k_grid);
 ACCEL_BENCH(Sphere1M, Embree, sphere1m_embree);
 ACCEL_BENCH(Sphere1M, BvhSah, sphere1m_bvh_sah);
 ACCEL_BENCH(Sphere1M, Grid, sphere1m_grid);
+
+// The Cornell box's camera rays (eye at z = 3.9, vertical fov 0.69 rad, 256 x 256), in
+// 4 x 2 pixel blocks so that eight consecutive rays are a coherent packet, each pixel
+// jittered; and shadow rays from their hits towards the point light at (0, 0.95, 0).
+struct CornellRays {
+    std::vector<Ray> camera, shadow;
+};
+
+const CornellRays& cornell_rays() {
+    static const CornellRays rays = [] {
+        CornellRays r;
+        const int n = 256;
+        const float tan_half = std::tan(0.69f / 2);
+        Rng rng(9);
+        for (int by = 0; by < n; by += 2)
+            for (int bx = 0; bx < n; bx += 4)
+                for (int k = 0; k < 8; ++k) {
+                    const float x = bx + (k & 3) + rng.next_float(),
+                                y = by + (k >> 2) + rng.next_float();
+                    Ray ray;
+                    ray.o = {0, 0, 3.9f};
+                    ray.d =
+                        normalize(Vec3((2 * x / n - 1) * tan_half, (1 - 2 * y / n) * tan_half, -1));
+                    r.camera.push_back(ray);
+                }
+        const EmbreeAccel accel(scene_for(Which::Cornell));
+        for (const Ray& c : r.camera) {
+            const auto hit = accel.intersect(c);
+            if (!hit) continue;
+            Ray s;
+            s.o = c.o + c.d * (hit->t * (1 - 1e-4f));
+            s.d = Vec3(0, 0.95f, 0) - s.o;
+            s.tmax = 1 - 1e-4f;
+            r.shadow.push_back(s);
+        }
+        return r;
+    }();
+    return rays;
+}
+
+void BM_CameraRays1(benchmark::State& state) {
+    const EmbreeAccel accel(scene_for(Which::Cornell));
+    const std::vector<Ray>& rays = cornell_rays().camera;
+    size_t i = 0, hits = 0;
+    for (auto _ : state) {
+        hits += accel.intersect(rays[i]).has_value();
+        i = (i + 1) % rays.size();
+    }
+    benchmark::DoNotOptimize(hits);
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_CameraRays1);
+
+// Items are rays, so the figure compares with BM_CameraRays1 directly.
+void BM_CameraRays8(benchmark::State& state) {
+    const EmbreeAccel accel(scene_for(Which::Cornell));
+    const std::vector<Ray>& rays = cornell_rays().camera;
+    size_t i = 0, hits = 0;
+    std::optional<Hit> out[8];
+    for (auto _ : state) {
+        accel.intersect8(*reinterpret_cast<const Ray(*)[8]>(&rays[i]), out);
+        for (const auto& h : out) hits += h.has_value();
+        i = (i + 8) % rays.size();
+    }
+    benchmark::DoNotOptimize(hits);
+    state.SetItemsProcessed(state.iterations() * 8);
+}
+BENCHMARK(BM_CameraRays8);
+
+void BM_ShadowRays1(benchmark::State& state) {
+    const EmbreeAccel accel(scene_for(Which::Cornell));
+    const std::vector<Ray>& rays = cornell_rays().shadow;
+    size_t i = 0, blocked = 0;
+    for (auto _ : state) {
+        blocked += accel.occluded(rays[i]);
+        i = (i + 1) % rays.size();
+    }
+    benchmark::DoNotOptimize(blocked);
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ShadowRays1);
+
+// rtcOccluded1M over batches of state.range(0) rays, coherent (1) or incoherent (0) hint.
+void BM_ShadowRaysStream(benchmark::State& state) {
+    const EmbreeAccel accel(scene_for(Which::Cornell));
+    const std::vector<Ray>& rays = cornell_rays().shadow;
+    const size_t batch = size_t(state.range(0));
+    std::unique_ptr<bool[]> out(new bool[batch]);
+    size_t i = 0, blocked = 0;
+    for (auto _ : state) {
+        if (i + batch > rays.size()) i = 0;
+        accel.occluded_stream(&rays[i], batch, out.get(), state.range(1) != 0);
+        blocked += out[0];
+        i += batch;
+    }
+    benchmark::DoNotOptimize(blocked);
+    state.SetItemsProcessed(state.iterations() * batch);
+}
+BENCHMARK(BM_ShadowRaysStream)->Args({8, 1})->Args({64, 1})->Args({256, 1})->Args({256, 0});
 
 // Build of the 1M-triangle sphere on one core (TBB limited to one thread, which also
 // holds Embree to one thread).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "core/scene/motion.h"
 
@@ -50,9 +51,15 @@ SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& h
 
     // The surface where it was at the ray's time (motion.h: the static data when the
     // instance or mesh does not move).
-    const Transform xf = instance_transform_at(inst, ray.time);
-    const Vec3 p0 = position_at(mesh, i0, ray.time), p1 = position_at(mesh, i1, ray.time),
-               p2 = position_at(mesh, i2, ray.time);
+    // Static instances and meshes (the common case) are read in place: no copy of the
+    // transform and its inverse, no calls per vertex.
+    std::optional<Transform> moving;
+    if (!inst.motion.empty()) moving = instance_transform_at(inst, ray.time);
+    const Transform& xf = moving ? *moving : inst.to_world;
+    const bool deforms = !mesh.motion_positions.empty();
+    const Vec3 p0 = deforms ? position_at(mesh, i0, ray.time) : mesh.positions[i0],
+               p1 = deforms ? position_at(mesh, i1, ray.time) : mesh.positions[i1],
+               p2 = deforms ? position_at(mesh, i2, ray.time) : mesh.positions[i2];
     // Interpolating the vertices is more accurate than o + t d far from the origin.
     const Vec3 q = p0 * b0 + p1 * b1 + p2 * b2;
     sp.p = xf.point(q);
@@ -68,8 +75,10 @@ SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& h
     Vec3 ns = ng;
     sp.p_smooth = sp.p;
     if (!mesh.normals.empty()) {
-        const Vec3 n0 = normal_at(mesh, i0, ray.time), n1 = normal_at(mesh, i1, ray.time),
-                   n2 = normal_at(mesh, i2, ray.time);
+        const bool bends = !mesh.motion_normals.empty();
+        const Vec3 n0 = bends ? normal_at(mesh, i0, ray.time) : mesh.normals[i0],
+                   n1 = bends ? normal_at(mesh, i1, ray.time) : mesh.normals[i1],
+                   n2 = bends ? normal_at(mesh, i2, ray.time) : mesh.normals[i2];
         const Vec3 v[3] = {p0, p1, p2}, vn[3] = {n0, n1, n2};
         const float b[3] = {b0, b1, b2};
         sp.p_smooth = xf.point(smooth_surface_point(p0 * b0 + p1 * b1 + p2 * b2, v, vn, b));

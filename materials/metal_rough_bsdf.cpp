@@ -99,6 +99,10 @@ MetalRoughBsdf::MetalRoughBsdf(const MetalRoughParams& p)
         m_film_bound[0] = m_film_bound[1];
         m_f0_max = m_film_bound[0];
     }
+    // KHR_materials_specular's factor 0 on a dielectric leaves no layer at all: the
+    // Lambertian base, without Fresnel, table lookups or a lobe choice (issue 14).
+    m_lambert = !m_film && !(m_p.metallic > 0) && !(m_f0_max > 0) && !(m_p.dielectric_f90 > 0);
+    if (m_lambert) return;
     if (m_p.layering != GltfLayering::AlbedoScaled || m_p.metallic >= 1) return;
     float e_avg;
     if (m_delta) {
@@ -265,6 +269,7 @@ float MetalRoughBsdf::specular_probability(Vec3 wo) const {
 
 Spectrum MetalRoughBsdf::eval(Vec3 wo, Vec3 wi, Transport) const {
     if (wo.z <= 0 || wi.z <= 0) return Spectrum(0);
+    if (m_lambert) return m_p.base_color * kInvPi;
     Vec3 h = wo + wi;
     if (length_squared(h) == 0) return Spectrum(0);
     h = normalize(h);
@@ -288,6 +293,7 @@ float MetalRoughBsdf::pdf_specular(Vec3 wo, Vec3 wi) const {
 
 float MetalRoughBsdf::pdf(Vec3 wo, Vec3 wi, Transport) const {
     if (wo.z <= 0 || wi.z <= 0) return 0;
+    if (m_lambert) return cosine_hemisphere_pdf(wi);
     const float ps = specular_probability(wo);
     return ps * pdf_specular(wo, wi) + (1 - ps) * cosine_hemisphere_pdf(wi);
 }
@@ -295,7 +301,7 @@ float MetalRoughBsdf::pdf(Vec3 wo, Vec3 wi, Transport) const {
 std::optional<BsdfSample> MetalRoughBsdf::sample(Vec3 wo, float u_lobe, Vec2 u,
                                                  Transport mode) const {
     if (wo.z <= 0) return std::nullopt;
-    const float ps = specular_probability(wo);
+    const float ps = m_lambert ? 0.0f : specular_probability(wo);
     if (u_lobe < ps) {
         if (m_delta) {
             const Vec3 wi(-wo.x, -wo.y, wo.z);

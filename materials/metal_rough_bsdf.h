@@ -88,6 +88,7 @@ private:
     bool m_delta;
     bool m_aniso = false;     // alpha_x != alpha_y
     bool m_film = false;      // iridescence > 0 with a film of positive thickness
+    bool m_lambert = false;   // no specular lobe (specular 0, no metal): the base alone
     Spectrum m_film_f0;       // the dielectric's f0 under its film: dielectric_f0 / f90
     float m_f0_max;           // the largest channel of dielectric_f0
     // With a film: m_film_bound[i] is the smallest f0 whose Schlick curve (with f90)

@@ -8,8 +8,8 @@
 //     A(mu) = int D G / (4 n.v n.l) n.l dl,   B(mu) = int (1 - v.h)^5 D G / (4 n.v n.l) n.l dl.
 // A and B depend only on mu and alpha, so one table per distribution serves every
 // material. Like Kulla & Conty (2017) and Turquin (2019) we integrate them numerically
-// once per process (a few hundred milliseconds, in parallel) instead of shipping a
-// fitted table.
+// instead of shipping a fitted table: each roughness row once per process, when a
+// material first needs it (about a millisecond a row).
 #pragma once
 
 #include "core/math/vec.h"

@@ -252,4 +252,73 @@ bool EmbreeAccel::do_occluded(const Ray& ray) const {
     return r.tfar == -std::numeric_limits<float>::infinity();
 }
 
+void EmbreeAccel::intersect8(const Ray (&rays)[8], std::optional<Hit> (&hits)[8]) const {
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    alignas(32) int valid[8];
+    alignas(32) RTCRayHit8 rh;
+    for (int i = 0; i < 8; ++i) {
+        valid[i] = is_traceable(rays[i]) ? -1 : 0;
+        Ray safe;
+        safe.d = {0, 0, 1};
+        const Ray& r = valid[i] ? rays[i] : safe;
+        rh.ray.org_x[i] = r.o.x;
+        rh.ray.org_y[i] = r.o.y;
+        rh.ray.org_z[i] = r.o.z;
+        rh.ray.dir_x[i] = r.d.x;
+        rh.ray.dir_y[i] = r.d.y;
+        rh.ray.dir_z[i] = r.d.z;
+        rh.ray.tnear[i] = r.tmin;
+        rh.ray.tfar[i] = r.tmax;
+        rh.ray.time[i] = r.time;
+        rh.ray.mask[i] = 0xffffffffu;
+        rh.ray.id[i] = i;
+        rh.ray.flags[i] = 0;
+        rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect8(valid, m_impl->top, &ctx, &rh);
+    for (int i = 0; i < 8; ++i) {
+        if (!valid[i] || rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) {
+            hits[i].reset();
+            continue;
+        }
+        Hit h;
+        h.t = rh.ray.tfar[i];
+        h.instance = rh.hit.instID[0][i];
+        h.mesh = m_impl->mesh_ids[m_impl->instance_object[h.instance]][rh.hit.geomID[i]];
+        h.prim = rh.hit.primID[i];
+        h.b1 = rh.hit.u[i];
+        h.b2 = rh.hit.v[i];
+        hits[i] = h;
+    }
+}
+
+void EmbreeAccel::occluded_stream(const Ray* rays, size_t n, bool* occluded, bool coherent) const {
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    ctx.flags =
+        coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    constexpr size_t kChunk = 256;
+    RTCRay buffer[kChunk];
+    for (size_t start = 0; start < n; start += kChunk) {
+        const size_t m = std::min(kChunk, n - start);
+        for (size_t i = 0; i < m; ++i) {
+            fill_ray(rays[start + i], buffer[i]);
+            // An untraceable ray becomes an empty interval, which Embree skips.
+            if (!is_traceable(rays[start + i])) {
+                Ray safe;
+                safe.d = {0, 0, 1};
+                safe.tmin = 1;
+                safe.tmax = 0;
+                fill_ray(safe, buffer[i]);
+            }
+        }
+        rtcOccluded1M(m_impl->top, &ctx, buffer, unsigned(m), sizeof(RTCRay));
+        for (size_t i = 0; i < m; ++i)
+            occluded[start + i] = buffer[i].tfar == -std::numeric_limits<float>::infinity();
+    }
+}
+
 }  // namespace penumbra

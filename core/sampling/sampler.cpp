@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/sampling/hash.h"
+#include "core/sampling/zsobol_sampler.h"
 
 namespace penumbra {
 
@@ -49,17 +50,19 @@ StratifiedSampler::StratifiedSampler(uint32_t spp, uint64_t seed) : Sampler(spp,
     while (m_nx > 1 && spp % m_nx != 0) --m_nx;
     m_nx = std::max(m_nx, 1u);
     m_ny = spp / m_nx;
+    m_stream = hash_values(seed, 2);
 }
 
 void StratifiedSampler::start_pixel_sample(PixelCoord p, uint32_t sample_index) {
-    m_pixel = p;
+    m_pixel_hash = hash_values(m_seed, p.x, p.y);
     m_index = sample_index;
     m_dimension = 0;
-    m_rng.seed(hash_values(m_seed, p.x, p.y, sample_index), hash_values(m_seed, 2));
+    m_rng.seed(hash_combine(m_pixel_hash, sample_index), m_stream);
 }
 
 uint64_t StratifiedSampler::dimension_hash() const {
-    return hash_values(m_seed, m_pixel.x, m_pixel.y, m_dimension);
+    // hash_values(seed, x, y, dimension): the fold's prefix is the pixel's hash.
+    return hash_combine(m_pixel_hash, m_dimension);
 }
 
 float StratifiedSampler::get_1d() {
@@ -109,13 +112,14 @@ uint32_t owen_scramble(uint32_t v, uint32_t seed) {
 }
 
 void SobolSampler::start_pixel_sample(PixelCoord p, uint32_t sample_index) {
-    m_pixel = p;
+    m_pixel_hash = hash_values(m_seed, p.x, p.y);
     m_index = sample_index;
     m_dimension = 0;
 }
 
 uint64_t SobolSampler::dimension_hash() const {
-    return hash_values(m_seed, m_pixel.x, m_pixel.y, m_dimension, 0x50b01);
+    // hash_values(seed, x, y, dimension, 0x50b01), from the pixel's prefix.
+    return hash_combine(hash_combine(m_pixel_hash, m_dimension), 0x50b01);
 }
 
 namespace {
@@ -147,6 +151,8 @@ std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t s
             return std::make_unique<StratifiedSampler>(spp, seed);
         case SamplerType::Sobol:
             return std::make_unique<SobolSampler>(spp, seed);
+        case SamplerType::ZSobol:
+            return std::make_unique<ZSobolSampler>(spp, seed);
     }
     throw std::invalid_argument("unknown sampler type");
 }
@@ -155,8 +161,9 @@ SamplerType parse_sampler_type(const std::string& name) {
     if (name == "independent") return SamplerType::Independent;
     if (name == "stratified") return SamplerType::Stratified;
     if (name == "sobol") return SamplerType::Sobol;
+    if (name == "zsobol") return SamplerType::ZSobol;
     throw std::invalid_argument("unknown sampler '" + name +
-                                "' (expected independent, stratified or sobol)");
+                                "' (expected independent, stratified, sobol or zsobol)");
 }
 
 }  // namespace penumbra

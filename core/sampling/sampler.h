@@ -69,7 +69,8 @@ public:
 private:
     uint64_t dimension_hash() const;
     uint32_t m_nx, m_ny;
-    PixelCoord m_pixel;
+    uint64_t m_pixel_hash = 0;  // hash_values(seed, x, y), the prefix of every dimension's
+    uint64_t m_stream = 0;      // the jitter's PCG stream, hash_values(seed, 2)
     uint32_t m_index = 0;
     uint32_t m_dimension = 0;
     Rng m_rng;
@@ -92,7 +93,7 @@ public:
 
 private:
     uint64_t dimension_hash() const;
-    PixelCoord m_pixel;
+    uint64_t m_pixel_hash = 0;  // hash_values(seed, x, y), the prefix of every dimension's
     uint32_t m_index = 0;
     uint32_t m_dimension = 0;
 };
@@ -107,9 +108,9 @@ uint32_t owen_scramble(uint32_t v, uint32_t seed);
 // "Correlated Multi-Jittered Sampling", the cycle-walking hash permutation).
 uint32_t permutation_element(uint32_t i, uint32_t n, uint32_t key);
 
-enum class SamplerType { Independent, Stratified, Sobol };
+enum class SamplerType { Independent, Stratified, Sobol, ZSobol };
 std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t seed);
-// "independent" | "stratified" | "sobol"; throws std::invalid_argument otherwise.
+// "independent" | "stratified" | "sobol" | "zsobol"; throws std::invalid_argument otherwise.
 SamplerType parse_sampler_type(const std::string& name);
 
 }  // namespace penumbra

@@ -78,8 +78,8 @@ TEST(PathIntegrator, FurnaceBoxRadianceIsEmissionOverOneMinusAlbedo) {
     const auto s = furnace_box(Le, a);
     for (LightStrategy strategy :
          {LightStrategy::Mis, LightStrategy::BsdfOnly, LightStrategy::LightOnly}) {
-        for (SamplerType type :
-             {SamplerType::Independent, SamplerType::Stratified, SamplerType::Sobol}) {
+        for (SamplerType type : {SamplerType::Independent, SamplerType::Stratified,
+                                 SamplerType::Sobol, SamplerType::ZSobol}) {
             IntegratorOptions opt;
             opt.max_depth = 200;
             opt.strategy = strategy;

@@ -94,7 +94,8 @@ TEST(Render, ImagesAreBitwiseIdenticalAcrossThreadCounts) {
     opt.seed = 1234;
     opt.progress = false;
     opt.tile_size = 7;
-    for (SamplerType type : {SamplerType::Independent, SamplerType::Stratified}) {
+    for (SamplerType type :
+         {SamplerType::Independent, SamplerType::Stratified, SamplerType::ZSobol}) {
         opt.sampler = type;
         opt.threads = 1;
         const Image a = render(ctx, camera, *integrator, opt).resolve();
@@ -136,8 +137,8 @@ TEST(Render, PassesAddUpToTheSameImageBitForBit) {
     RenderOptions opt;
     opt.spp = 7;
     opt.progress = false;
-    for (SamplerType type : {SamplerType::Independent, SamplerType::Stratified,
-                             SamplerType::Sobol}) {
+    for (SamplerType type : {SamplerType::Independent, SamplerType::Stratified, SamplerType::Sobol,
+                             SamplerType::ZSobol}) {
         opt.sampler = type;
         Film whole(24, 18), split(24, 18);
         ASSERT_TRUE(render_samples(ctx, camera, *integrator, opt, whole, 0, 7));

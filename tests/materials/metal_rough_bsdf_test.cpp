@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/sampling/warp.h"
 #include "materials/fresnel.h"
 #include "support/bsdf_checks.h"
 
@@ -234,6 +235,16 @@ TEST(MetalRoughBsdf, NoSpecularLayerIsLambertian) {
             const Vec3 wi = spherical_direction(0.01f + 0.99f * rng.next_float(), 6 * rng.next_float());
             expect_relative(bsdf.eval(wo, wi, Transport::Radiance), p.base_color * kInvPi, 1e-6f,
                             describe(p, wo));
+            EXPECT_FLOAT_EQ(bsdf.pdf(wo, wi, Transport::Radiance), cosine_hemisphere_pdf(wi));
+            // Sampling is cosine-weighted: the weight is the base colour, the direction
+            // the cosine warp of u.
+            const Vec2 u(rng.next_float(), rng.next_float());
+            const auto s = bsdf.sample(wo, rng.next_float(), u, Transport::Radiance);
+            ASSERT_TRUE(s);
+            EXPECT_EQ(s->lobe, Lobe::Diffuse);
+            const Vec3 expected = square_to_cosine_hemisphere(u);
+            EXPECT_FLOAT_EQ(s->wi.z, expected.z);
+            expect_relative(s->f * (s->wi.z / s->pdf), p.base_color, 1e-5f, describe(p, wo));
         }
     }
 }

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+#include <vector>
+
 #include "core/sampling/rng.h"
 #include "core/sampling/warp.h"
 #include "support/scene_builder.h"
@@ -105,6 +109,56 @@ TEST(EmbreeAccel, SharesPaddedVertexArraysAndCopiesOthers) {
         EXPECT_EQ(ha->t, hb->t);
     }
     EXPECT_EQ(hits, 2000);
+// Packets and streams (bench/accel_bench.cpp measures them) answer exactly what single
+// rays do, including rays with short intervals and untraceable ones.
+TEST(EmbreeAccel, PacketsAndStreamsAgreeWithSingleRays) {
+    Scene scene;
+    const int mat = test::add_lambertian(scene, Spectrum(0.5f));
+    const uint32_t cube = test::add_cube_object(scene, mat);
+    test::add_instance(scene, cube, Transform::translate({-1, 0, 0}));
+    test::add_instance(scene, cube,
+                       Transform::trs({1, 0.3f, 0}, Quat{0, 0.38f, 0, 0.92f}, {1, 2, 1}));
+    EmbreeAccel accel(scene);
+    Rng rng(5);
+    std::vector<Ray> rays(8 * 64);
+    for (Ray& r : rays) {
+        r.o =
+            Vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f, rng.next_float() - 0.5f) * 6.0f;
+        // Aimed near the cubes, so that about half the rays hit.
+        const Vec3 target(4 * rng.next_float() - 2, 2 * rng.next_float() - 1,
+                          2 * rng.next_float() - 1);
+        r.d = normalize(target - r.o);
+        r.tmax = rng.next_float() < 0.3f ? 1.5f : std::numeric_limits<float>::infinity();
+    }
+    rays[3].d = {0, 0, 0};
+    rays[20].o.x = std::numeric_limits<float>::quiet_NaN();
+    int hits = 0, blocked = 0;
+    for (size_t start = 0; start < rays.size(); start += 8) {
+        std::optional<Hit> packet[8];
+        accel.intersect8(*reinterpret_cast<const Ray(*)[8]>(&rays[start]), packet);
+        for (size_t i = 0; i < 8; ++i) {
+            const auto single = accel.intersect(rays[start + i]);
+            ASSERT_EQ(single.has_value(), packet[i].has_value()) << start + i;
+            if (!single) continue;
+            ++hits;
+            EXPECT_EQ(single->t, packet[i]->t);
+            EXPECT_EQ(single->instance, packet[i]->instance);
+            EXPECT_EQ(single->prim, packet[i]->prim);
+            EXPECT_EQ(single->b1, packet[i]->b1);
+        }
+    }
+    for (bool coherent : {false, true}) {
+        std::unique_ptr<bool[]> stream(new bool[rays.size()]);
+        accel.occluded_stream(rays.data(), rays.size(), stream.get(), coherent);
+        for (size_t i = 0; i < rays.size(); ++i) {
+            ASSERT_EQ(stream[i], accel.occluded(rays[i])) << i;
+            blocked += stream[i];
+        }
+    }
+    // Not vacuous: both answers occur.
+    EXPECT_GT(hits, 50);
+    EXPECT_LT(hits, int(rays.size()) - 50);
+    EXPECT_GT(blocked, 100);
 }
 
 }  // namespace

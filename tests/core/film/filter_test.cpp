@@ -110,6 +110,19 @@ TEST_P(Filters, IsSymmetricAndVanishesOutsideTheSupport) {
 
 INSTANTIATE_TEST_SUITE_P(, Filters, ::testing::ValuesIn(kFilters));
 
+// The box's closed form keeps the pixel sample's stratification exactly: the offset is
+// u - 1/2, up to the rounding of one subtraction, and it stays inside the pixel.
+TEST(Filter, BoxOffsetIsThePixelSampleMinusOneHalf) {
+    const auto f = make_filter("box");
+    for (float u : {0.0f, 0.25f, 0.5f, 0.7f, 0x1.fffffep-1f}) {
+        const FilterSample s = f->sample({u, 1 - u * 0.5f});
+        EXPECT_EQ(s.offset.x, u - 0.5f);
+        EXPECT_EQ(s.offset.y, (1 - u * 0.5f) - 0.5f);
+        EXPECT_LT(s.offset.x, 0.5f);
+        EXPECT_EQ(s.weight, 1.0f);
+    }
+}
+
 TEST(Filter, UnknownNameThrows) { EXPECT_THROW(make_filter("mitchell"), std::invalid_argument); }
 
 }  // namespace
