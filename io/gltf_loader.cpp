@@ -222,7 +222,7 @@ GltfAnimations load_gltf_animations(const std::string& path) {
 }
 
 Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
-    const tinygltf::Model model = parse(path, options.strict);
+    tinygltf::Model model = parse(path, options.strict);
     GltfContext ctx{model, path, options.rec709_to_working, options.light_units};
     ctx.strict = options.strict;
     ctx.max_texture_pixels = options.max_texture_pixels;
@@ -243,6 +243,8 @@ Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
     std::vector<MeshOrigin> origins;
     load_meshes(ctx, scene, origins);
     load_materials(ctx, scene);
+    // The images are decoded: their encoded bytes (from URIs) are not needed any more.
+    for (tinygltf::Image& image : model.images) std::vector<unsigned char>().swap(image.image);
     convert_scene_colors(scene, options.rec709_to_working);
     const GltfAnimations animations(ctx);
     const NodeMotion motion(ctx, animations, shutter);

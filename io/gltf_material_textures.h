@@ -32,6 +32,7 @@ private:
     int texture_index(int index, ImageEncoding encoding);
     int image_source(const tinygltf::Texture& gt, const std::string& el) const;
     int image_index(int index, ImageEncoding encoding);
+    static void set_min_filter(int filter, Texture& tex);
     WrapMode wrap_mode(const std::string& el, const char* what, int mode) const;
 
     const GltfContext& m_ctx;
@@ -39,6 +40,7 @@ private:
     bool m_allow_webp = false;  // EXT_texture_webp is used: WebP images are glTF images
     std::map<std::pair<int, int>, int> m_textures, m_images;  // -1: undecodable
     std::set<int> m_undecodable;                              // glTF image indices
+    std::set<int> m_mipmapped;  // glTF images that a texture samples with mipmaps
 };
 
 }  // namespace penumbra
