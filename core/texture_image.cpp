@@ -28,15 +28,31 @@ double srgb_decode(double v) {
 // decoded value is nearest (so a re-encoded mip texel is the best the format holds).
 struct SrgbTable {
     std::vector<float> decoded, midpoints;
+    // 8-bit only: the code at the start of each of kBuckets equal steps of [0, 1], from
+    // which encode() walks a step or two (the curve's steepest part, at 0, spans 0.8
+    // codes a bucket) instead of searching all the midpoints.
+    static constexpr int kBuckets = 4096;
+    std::vector<uint16_t> bucket;
     explicit SrgbTable(uint32_t max_code) : decoded(max_code + 1), midpoints(max_code) {
         for (uint32_t i = 0; i <= max_code; ++i)
             decoded[i] = float(srgb_decode(double(i) / max_code));
         for (uint32_t i = 0; i < max_code; ++i)
             midpoints[i] = float(0.5 * (double(decoded[i]) + decoded[i + 1]));
+        if (max_code == 255)
+            for (int k = 0; k <= kBuckets; ++k)
+                bucket.push_back(uint16_t(search(float(k) / kBuckets)));
     }
-    uint32_t encode(float v) const {
+    uint32_t search(float v) const {
         return uint32_t(std::upper_bound(midpoints.begin(), midpoints.end(), v) -
                         midpoints.begin());
+    }
+    uint32_t encode(float v) const {
+        if (bucket.empty() || !(v > 0) || !(v < 1)) return search(v);
+        uint32_t c = bucket[size_t(v * kBuckets)];
+        // The same answer as search(v): up past midpoints below v, down past those above.
+        while (c < midpoints.size() && v >= midpoints[c]) ++c;
+        while (c > 0 && v < midpoints[c - 1]) --c;
+        return c;
     }
 };
 
@@ -68,6 +84,33 @@ Taps axis_taps(int i, int n, int m) {
         t.weight[k] = float((b - a) / (hi - lo));
     }
     return t;
+}
+
+// The common case, 8-bit halved exactly (src 2w x 2h, dst w x h, C channels): each
+// texel the mean of its 2 x 2, through per-channel decode tables (several times faster
+// than the general taps).
+void downsample_u8_2x2(const uint8_t* src, uint8_t* dst, int w, int h, int C, bool srgb_colour) {
+    const SrgbTable& srgb = srgb8_table();
+    float lut[4][256];
+    bool colour[4];
+    for (int c = 0; c < C; ++c) {
+        colour[c] = srgb_colour && !((C == 2 && c == 1) || (C == 4 && c == 3));
+        for (int i = 0; i < 256; ++i) lut[c][i] = colour[c] ? srgb.decoded[size_t(i)] : float(i) / 255;
+    }
+    const size_t row = size_t(2 * w) * size_t(C);
+    tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
+        for (int y = rows.begin(); y < rows.end(); ++y) {
+            const uint8_t* a = src + size_t(2 * y) * row;
+            const uint8_t* b = a + row;
+            uint8_t* out = dst + size_t(y) * size_t(w) * size_t(C);
+            for (int x = 0; x < w; ++x, a += 2 * C, b += 2 * C, out += C)
+                for (int c = 0; c < C; ++c) {
+                    const float v =
+                        0.25f * (lut[c][a[c]] + lut[c][a[C + c]] + lut[c][b[c]] + lut[c][b[C + c]]);
+                    out[c] = uint8_t(colour[c] ? srgb.encode(v) : uint32_t(std::lround(v * 255)));
+                }
+        }
+    });
 }
 
 }  // namespace
@@ -142,6 +185,9 @@ void TextureImage::store(size_t i, int c, float v) {
 void TextureImage::downsample(int level) {
     const int fw = width(level - 1), fh = height(level - 1);
     const int w = width(level), h = height(level);
+    if (m_format == TexelFormat::U8 && fw == 2 * w && fh == 2 * h)
+        return downsample_u8_2x2(&m_u8[index(level - 1, 0, 0)], &m_u8[index(level, 0, 0)], w, h,
+                                 m_channels, m_srgb);
     std::vector<Taps> tx(size_t(w), Taps{});
     for (int x = 0; x < w; ++x) tx[size_t(x)] = axis_taps(x, fw, w);
     tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {

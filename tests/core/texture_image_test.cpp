@@ -104,6 +104,46 @@ TEST(TextureImage, SrgbLevelsAverageLinearValues) {
     EXPECT_FLOAT_EQ(a.texel(0, 0, 0).w, 128.0f / 255);
 }
 
+// 8-bit levels (sRGB and linear, the 2 x 2 fast path and odd sizes' general taps) hold
+// the code whose decoded value is nearest the linear box average, found here by
+// trying all 256.
+TEST(TextureImage, EightBitLevelsHoldTheNearestCode) {
+    for (const bool srgb : {true, false})
+        for (const int w : {16, 15}) {
+            SCOPED_TRACE(std::to_string(srgb) + " " + std::to_string(w));
+            TextureImage t(w, 16, 2, TexelFormat::U8, srgb);
+            uint8_t* p = static_cast<uint8_t*>(t.level0_data());
+            Rng rng(5);
+            for (int i = 0; i < w * 16 * 2; ++i) p[i] = uint8_t(rng.next_below(256));
+            t.build_mips();
+            auto decode = [&](int c, uint32_t code) {
+                return srgb && c == 0 ? double(srgb8_to_linear(uint8_t(code))) : code / 255.0;
+            };
+            const double r = double(w) / t.width(1);  // the finer texels each covers in x
+            for (int y = 0; y < t.height(1); ++y)
+                for (int x = 0; x < t.width(1); ++x)
+                    for (int c = 0; c < 2; ++c) {
+                        double sum = 0;
+                        for (int j = 0; j < 2; ++j)
+                            for (int i = 0; i < w; ++i) {
+                                const double lo = std::max(double(i), x * r);
+                                const double hi = std::min(double(i + 1), (x + 1) * r);
+                                if (hi > lo) sum += (hi - lo) * decode(c, t.code(0, i, 2 * y + j, c));
+                            }
+                        const double mean = sum / (2 * r);
+                        uint32_t best = 0;
+                        for (uint32_t k = 1; k < 256; ++k)
+                            if (std::abs(decode(c, k) - mean) < std::abs(decode(c, best) - mean))
+                                best = k;
+                        // Ties (a linear mean of k + 1/2 codes) may go either way.
+                        const uint32_t got = t.code(1, x, y, c);
+                        EXPECT_LE(std::abs(decode(c, got) - mean),
+                                  std::abs(decode(c, best) - mean) + 1e-6)
+                            << x << " " << y << " " << c << ": " << got << " for " << best;
+                    }
+        }
+}
+
 // The table is the IEC 61966-2-1 curve (to OCIO's continuous toe, 2.5e-4 relative, below
 // code 11): its two segments, the end points, monotone. io/ checks it against OCIO.
 TEST(TextureImage, SrgbTablesFollowTheStandard) {
