@@ -27,8 +27,7 @@ int wrap(int i, int n, WrapMode mode) {
 }
 
 // One level, nearest or bilinear; texel centers sit at half-integer coordinates.
-Vec4 filter_level(const Texture& tex, const TextureImage& img, int level, Vec2 uv,
-                  bool nearest) {
+Vec4 filter_level(const Texture& tex, const TextureImage& img, int level, Vec2 uv, bool nearest) {
     const int w = img.width(level), h = img.height(level);
     const float x = uv.x * w - 0.5f, y = uv.y * h - 0.5f;
     if (nearest) {
@@ -43,8 +42,8 @@ Vec4 filter_level(const Texture& tex, const TextureImage& img, int level, Vec2 u
     const int y0 = wrap(static_cast<int>(fy), h, tex.wrap_t);
     const int y1 = wrap(static_cast<int>(fy) + 1, h, tex.wrap_t);
     return img.texel(level, x0, y0) * ((1 - ax) * (1 - ay)) +
-           img.texel(level, x1, y0) * (ax * (1 - ay)) +
-           img.texel(level, x0, y1) * ((1 - ax) * ay) + img.texel(level, x1, y1) * (ax * ay);
+           img.texel(level, x1, y0) * (ax * (1 - ay)) + img.texel(level, x0, y1) * ((1 - ax) * ay) +
+           img.texel(level, x1, y1) * (ax * ay);
 }
 
 Vec4 filtered(const Texture& tex, const TextureImage& img, Vec2 uv, float width) {

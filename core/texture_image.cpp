@@ -80,7 +80,8 @@ Taps axis_taps(int i, int n, int m) {
     t.count = last - t.first;
     CHECK(t.count >= 1 && t.count <= 4);
     for (int k = 0; k < t.count; ++k) {
-        const double a = std::max(lo, double(t.first + k)), b = std::min(hi, double(t.first + k + 1));
+        const double a = std::max(lo, double(t.first + k)),
+                     b = std::min(hi, double(t.first + k + 1));
         t.weight[k] = float((b - a) / (hi - lo));
     }
     return t;
@@ -95,7 +96,8 @@ void downsample_u8_2x2(const uint8_t* src, uint8_t* dst, int w, int h, int C, bo
     bool colour[4];
     for (int c = 0; c < C; ++c) {
         colour[c] = srgb_colour && !((C == 2 && c == 1) || (C == 4 && c == 3));
-        for (int i = 0; i < 256; ++i) lut[c][i] = colour[c] ? srgb.decoded[size_t(i)] : float(i) / 255;
+        for (int i = 0; i < 256; ++i)
+            lut[c][i] = colour[c] ? srgb.decoded[size_t(i)] : float(i) / 255;
     }
     const size_t row = size_t(2 * w) * size_t(C);
     tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
@@ -132,9 +134,15 @@ TextureImage::TextureImage(int width, int height, int channels, TexelFormat form
         h = std::max(1, h / 2);
     }
     switch (format) {
-        case TexelFormat::U8: m_u8.resize(total); break;
-        case TexelFormat::U16: m_u16.resize(total); break;
-        case TexelFormat::F32: m_f32.resize(total); break;
+        case TexelFormat::U8:
+            m_u8.resize(total);
+            break;
+        case TexelFormat::U16:
+            m_u16.resize(total);
+            break;
+        case TexelFormat::F32:
+            m_f32.resize(total);
+            break;
     }
 }
 
@@ -147,9 +155,12 @@ TextureImage::TextureImage(const Image& image, bool mipmaps)
 
 void* TextureImage::level0_data() {
     switch (m_format) {
-        case TexelFormat::U8: return m_u8.data();
-        case TexelFormat::U16: return m_u16.data();
-        default: return m_f32.data();
+        case TexelFormat::U8:
+            return m_u8.data();
+        case TexelFormat::U16:
+            return m_u16.data();
+        default:
+            return m_f32.data();
     }
 }
 
@@ -225,8 +236,10 @@ Vec4 TextureImage::texel(int level, int x, int y) const {
             const float g = linear(i, 0);
             return {g, g, g, linear(i + 1, 1)};
         }
-        case 3: return {linear(i, 0), linear(i + 1, 1), linear(i + 2, 2), 1};
-        default: return {linear(i, 0), linear(i + 1, 1), linear(i + 2, 2), linear(i + 3, 3)};
+        case 3:
+            return {linear(i, 0), linear(i + 1, 1), linear(i + 2, 2), 1};
+        default:
+            return {linear(i, 0), linear(i + 1, 1), linear(i + 2, 2), linear(i + 3, 3)};
     }
 }
 
@@ -242,9 +255,12 @@ Image TextureImage::to_image(int level) const {
 uint32_t TextureImage::code(int level, int x, int y, int c) const {
     const size_t i = index(level, x, y) + size_t(c);
     switch (m_format) {
-        case TexelFormat::U8: return m_u8[i];
-        case TexelFormat::U16: return m_u16[i];
-        default: return 0;
+        case TexelFormat::U8:
+            return m_u8[i];
+        case TexelFormat::U16:
+            return m_u16[i];
+        default:
+            return 0;
     }
 }
 

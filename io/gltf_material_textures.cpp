@@ -23,9 +23,12 @@ TextureTable::TextureTable(const GltfContext& ctx, Scene& scene) : m_ctx(ctx), m
     // An image gets a pyramid unless every texture using it samples without mipmaps
     // (minFilter NEAREST or LINEAR); indices are checked where they are used.
     for (const tinygltf::Texture& gt : ctx.model.textures) {
-        const bool valid_sampler = gt.sampler >= 0 && size_t(gt.sampler) < ctx.model.samplers.size();
-        const int min_filter = valid_sampler ? ctx.model.samplers[size_t(gt.sampler)].minFilter : -1;
-        if (min_filter == TINYGLTF_TEXTURE_FILTER_NEAREST || min_filter == TINYGLTF_TEXTURE_FILTER_LINEAR)
+        const bool valid_sampler =
+            gt.sampler >= 0 && size_t(gt.sampler) < ctx.model.samplers.size();
+        const int min_filter =
+            valid_sampler ? ctx.model.samplers[size_t(gt.sampler)].minFilter : -1;
+        if (min_filter == TINYGLTF_TEXTURE_FILTER_NEAREST ||
+            min_filter == TINYGLTF_TEXTURE_FILTER_LINEAR)
             continue;
         m_mipmapped.insert(gt.source);
         const tinygltf::Value& webp = extension_object(gt.extensions, "EXT_texture_webp");
@@ -42,14 +45,21 @@ void TextureTable::set_min_filter(int filter, Texture& tex) {
             tex.min_nearest = true;
             tex.mip = MipFilter::None;
             break;
-        case TINYGLTF_TEXTURE_FILTER_LINEAR: tex.mip = MipFilter::None; break;
+        case TINYGLTF_TEXTURE_FILTER_LINEAR:
+            tex.mip = MipFilter::None;
+            break;
         case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
             tex.min_nearest = true;
             tex.mip = MipFilter::Nearest;
             break;
-        case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST: tex.mip = MipFilter::Nearest; break;
-        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: tex.min_nearest = true; break;
-        default: break;
+        case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+            tex.mip = MipFilter::Nearest;
+            break;
+        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
+            tex.min_nearest = true;
+            break;
+        default:
+            break;
     }
 }
 
@@ -167,11 +177,9 @@ int TextureTable::image_index(int index, ImageEncoding encoding) {
     const std::vector<uint8_t>* bytes = &gi.image;  // captured undecoded by the image callback
     if (gi.bufferView >= 0)
         bytes = &(view = buffer_view_bytes(m_ctx, el, gi.bufferView));
-    else if (!gi.image.empty())
-        ;
-    else if (external)
+    else if (gi.image.empty() && external)
         m_ctx.fail(el, "cannot read image file '" + gi.uri + "'");
-    else
+    else if (gi.image.empty())
         m_ctx.fail(el, "has no image data");
     const std::string label = external ? gi.uri : gi.name;
     const std::string named = label.empty() ? el : el + " ('" + label + "')";

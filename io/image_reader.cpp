@@ -66,8 +66,7 @@ auto decode_with(const std::vector<uint8_t>& bytes, const std::string& name, con
         config.attribute("oiio:UnassociatedAlpha", 1);
         if (!in || !in->supports("ioproxy"))
             throw ImageDecodeError(name, std::string("no reader for format '") + ext + "'");
-        if (!in->set_ioproxy(&proxy) ||
-            !in->open(std::string("memory.") + ext, spec_in, config))
+        if (!in->set_ioproxy(&proxy) || !in->open(std::string("memory.") + ext, spec_in, config))
             throw ImageDecodeError(name, one_line(in->geterror()));
 
         const OIIO::ImageSpec& spec = in->spec();
@@ -91,18 +90,18 @@ auto decode_with(const std::vector<uint8_t>& bytes, const std::string& name, con
 
 Image decode_float(const std::vector<uint8_t>& bytes, const std::string& name, const char* ext,
                    ImageEncoding encoding, uint64_t max_pixels) {
-    return decode_with(bytes, name, ext, max_pixels,
-                       [&](OIIO::ImageInput& in, const OIIO::ImageSpec& spec, int channels) {
-                           Image img(spec.width, spec.height, channels);
-                           img.name = name;
-                           if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT,
-                                              img.pixels.data()))
-                               throw ImageDecodeError(name, one_line(in.geterror()));
-                           // The transfer applies to colour, never to alpha (glTF 2.0,
-                           // section 3.9.2).
-                           if (encoding == ImageEncoding::Srgb) decode_srgb(img);
-                           return img;
-                       });
+    return decode_with(
+        bytes, name, ext, max_pixels,
+        [&](OIIO::ImageInput& in, const OIIO::ImageSpec& spec, int channels) {
+            Image img(spec.width, spec.height, channels);
+            img.name = name;
+            if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
+                throw ImageDecodeError(name, one_line(in.geterror()));
+            // The transfer applies to colour, never to alpha (glTF 2.0,
+            // section 3.9.2).
+            if (encoding == ImageEncoding::Srgb) decode_srgb(img);
+            return img;
+        });
 }
 
 // The file's own precision: 8-bit and 16-bit files are read straight into texel storage
@@ -155,8 +154,8 @@ TextureImage decode_texture_image(const std::vector<uint8_t>& bytes, const std::
     if (h.format != ImageFormat::Unknown && uint64_t(h.width) * h.height > limits.max_pixels)
         throw ImageDecodeError(name, too_large(h.width, h.height, limits.max_pixels));
     if (!h.problem.empty()) throw ImageDecodeError(name, h.problem);
-    TextureImage img = decode_texels(bytes, name, image_extension(h.format), encoding,
-                                     limits.max_pixels, mipmaps);
+    TextureImage img =
+        decode_texels(bytes, name, image_extension(h.format), encoding, limits.max_pixels, mipmaps);
     if (uint32_t(img.width()) != h.width || uint32_t(img.height()) != h.height)
         throw ImageDecodeError(name, "the header says " + std::to_string(h.width) + "x" +
                                          std::to_string(h.height) + ", the decoder " +

@@ -18,7 +18,8 @@ namespace {
 Scene quad_scene(const Transform& xf) {
     Scene s;
     const int mat = test::add_lambertian(s, Spectrum(0.5f));
-    const uint32_t q = test::add_quad_object(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, mat);
+    const uint32_t q =
+        test::add_quad_object(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, mat);
     test::add_instance(s, q, xf);
     return s;
 }

@@ -128,7 +128,8 @@ TEST(TextureImage, EightBitLevelsHoldTheNearestCode) {
                             for (int i = 0; i < w; ++i) {
                                 const double lo = std::max(double(i), x * r);
                                 const double hi = std::min(double(i + 1), (x + 1) * r);
-                                if (hi > lo) sum += (hi - lo) * decode(c, t.code(0, i, 2 * y + j, c));
+                                if (hi > lo)
+                                    sum += (hi - lo) * decode(c, t.code(0, i, 2 * y + j, c));
                             }
                         const double mean = sum / (2 * r);
                         uint32_t best = 0;
@@ -152,7 +153,8 @@ TEST(TextureImage, SrgbTablesFollowTheStandard) {
     EXPECT_EQ(srgb16_to_linear(65535), 1.0f);
     EXPECT_NEAR(srgb8_to_linear(10), 10.0 / 255 / 12.92, 2.5e-4 * 10.0 / 255 / 12.92);
     EXPECT_NEAR(srgb8_to_linear(200), std::pow((200.0 / 255 + 0.055) / 1.055, 2.4), 1e-7);
-    for (int i = 1; i < 256; ++i) EXPECT_LT(srgb8_to_linear(uint8_t(i - 1)), srgb8_to_linear(uint8_t(i)));
+    for (int i = 1; i < 256; ++i)
+        EXPECT_LT(srgb8_to_linear(uint8_t(i - 1)), srgb8_to_linear(uint8_t(i)));
     EXPECT_NEAR(srgb16_to_linear(257 * 200), srgb8_to_linear(200), 1e-7);
 }
 

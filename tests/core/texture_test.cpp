@@ -39,10 +39,9 @@ TEST(Texture, ZeroWidthIsBilinearAtLevelZero) {
     const float x = uv.x * 8 - 0.5f, y = uv.y * 8 - 0.5f;
     const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
     const float ax = x - float(x0), ay = y - float(y0);
-    const float want = t.texel(0, x0, y0).x * (1 - ax) * (1 - ay) +
-                       t.texel(0, x0 + 1, y0).x * ax * (1 - ay) +
-                       t.texel(0, x0, y0 + 1).x * (1 - ax) * ay +
-                       t.texel(0, x0 + 1, y0 + 1).x * ax * ay;
+    const float want =
+        t.texel(0, x0, y0).x * (1 - ax) * (1 - ay) + t.texel(0, x0 + 1, y0).x * ax * (1 - ay) +
+        t.texel(0, x0, y0 + 1).x * (1 - ax) * ay + t.texel(0, x0 + 1, y0 + 1).x * ax * ay;
     EXPECT_NEAR(lookup(tex, t, uv).x, want, 1e-6f);
     // Texel centres read the texel exactly.
     EXPECT_EQ(lookup(tex, t, {2.5f / 8, 5.5f / 8}).x, t.texel(0, 2, 5).x);
@@ -99,7 +98,8 @@ TEST(Texture, WrapModesAtEveryLevel) {
         mirror.wrap_s = mirror.wrap_t = WrapMode::MirroredRepeat;
         clamp.wrap_s = clamp.wrap_t = WrapMode::ClampToEdge;
         const Vec2 uv(0.37f, 0.81f);
-        EXPECT_NEAR(lookup(repeat, t, {uv.x + 3, uv.y - 2}, w).x, lookup(repeat, t, uv, w).x, 1e-6f);
+        EXPECT_NEAR(lookup(repeat, t, {uv.x + 3, uv.y - 2}, w).x, lookup(repeat, t, uv, w).x,
+                    1e-6f);
         EXPECT_NEAR(lookup(mirror, t, {-uv.x, 2 - uv.y}, w).x, lookup(mirror, t, uv, w).x, 1e-6f);
         EXPECT_NEAR(lookup(mirror, t, {uv.x + 2, uv.y}, w).x, lookup(mirror, t, uv, w).x, 1e-6f);
         const Vec2 corner(1 - 0.5f / float(n), 0.5f / float(t.height(level)));

@@ -74,7 +74,8 @@ TEST(TextureFootprint, DistantCheckerboardConvergesWithLessVariance) {
     // Footprints depend on the ray alone: the same image on every run.
     const Image again = test::render_scene(filtered, *camera, "path", 4, 1).image;
     ASSERT_EQ(again.pixels.size(), a.pixels.size());
-    EXPECT_EQ(std::memcmp(again.pixels.data(), a.pixels.data(), a.pixels.size() * sizeof(float)), 0);
+    EXPECT_EQ(std::memcmp(again.pixels.data(), a.pixels.data(), a.pixels.size() * sizeof(float)),
+              0);
 }
 
 }  // namespace
