@@ -15,8 +15,8 @@ namespace penumbra {
 
 enum class ImageEncoding { Linear, Srgb };
 
-// 2^28 pixels (16k x 16k): 4 GiB as float RGBA, more than any texture a renderer on one
-// machine should take on without being asked.
+// 2^28 pixels (16k x 16k): 1.3 GiB as RGBA8 with its pyramid (4 GiB as float RGBA), more
+// than any texture a renderer on one machine should take on without being asked.
 constexpr uint64_t kDefaultMaxTexturePixels = uint64_t(1) << 28;
 
 // A SceneError "<name>: cannot decode image: <why>" that keeps `why` apart, for callers
