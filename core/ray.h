@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/math/vec.h"
+#include "core/ray_cone.h"
 
 namespace penumbra {
 
@@ -14,6 +15,7 @@ struct Ray {
     float tmin = 0;
     float tmax = std::numeric_limits<float>::infinity();
     float time = 0;  // normalized shutter time in [0, 1]
+    RayCone cone;    // texture footprint (camera rays and their bounces; none: a point)
 };
 
 // The closest hit as every accelerator reports it: enough to rebuild the surface point

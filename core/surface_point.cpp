@@ -33,6 +33,29 @@ Vec3 point_error(const Transform& xf, Vec3 q, Vec3 q_err) {
     return {e[0], e[1], e[2]};
 }
 
+// The cone's width at the hit over |cos| (the footprint's long axis on the surface)
+// times each UV set's ratio sqrt(uv area / world area) of the triangle: the paper's
+// Delta_0 = 0.5 log2(t_a / p_a), in UV units rather than texels, so that one value
+// serves textures of every size.
+void set_texture_footprint(const TriangleMesh& mesh, const Transform& xf, const Ray& ray,
+                           Vec3 e1, Vec3 e2, SurfacePoint& sp) {
+    const float dlen = length(ray.d);
+    sp.cone_width = ray.cone.width_at(sp.t * dlen);
+    const float world_area2 = length(cross(xf.vector(e1), xf.vector(e2)));
+    if (!(world_area2 > 0) || !(dlen > 0)) return;
+    const float cos = std::max(std::abs(dot(sp.ng, ray.d)) / dlen, 1e-4f);
+    const float w = sp.cone_width / cos;
+    const uint32_t* idx = &mesh.indices[3 * size_t(sp.prim)];
+    const std::vector<Vec2>* sets[2] = {&mesh.uv0, &mesh.uv1};
+    for (int s = 0; s < 2; ++s) {
+        const std::vector<Vec2>& uv = *sets[s];
+        if (uv.empty()) continue;
+        const Vec2 d1 = uv[idx[1]] - uv[idx[0]], d2 = uv[idx[2]] - uv[idx[0]];
+        const float uv_area2 = std::abs(d1.x * d2.y - d1.y * d2.x);
+        sp.uv_width[s] = w * std::sqrt(uv_area2 / world_area2);
+    }
+}
+
 }  // namespace
 
 SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
@@ -112,6 +135,7 @@ SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& h
     }
     if (!mesh.colors.empty())
         sp.color = mesh.colors[i0] * b0 + mesh.colors[i1] * b1 + mesh.colors[i2] * b2;
+    if (ray.cone.active()) set_texture_footprint(mesh, xf, ray, e1, e2, sp);
     return sp;
 }
 

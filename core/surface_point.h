@@ -28,6 +28,10 @@ struct SurfacePoint {
     Vec3 dpdu;     // world tangent along texture u (zero when the mesh has no UVs)
     Vec4 tangent;  // world tangent from the mesh (w = bitangent sign); w = 0 when absent
     Vec2 uv0, uv1;
+    // The ray cone's footprint here: its world width, and that width over the cosine as a
+    // width in each UV set (Akenine-Moller et al. 2021, eq. 34); 0 without a cone.
+    float cone_width = 0;
+    float uv_width[2] = {0, 0};
     Vec4 color{1, 1, 1, 1};  // COLOR_0
     float t = 0;
     uint32_t instance = 0, mesh = 0, prim = 0;

@@ -12,6 +12,7 @@ bool pass_through(const SurfacePoint& sp, const ShadingData& sd, Sampler& sample
     if (sd.opacity >= 1 || (sd.opacity > 0 && sampler.get_1d() < sd.opacity)) return false;
     ray.o = offset_ray_origin(sp.p, sd.ng, ray.d);
     ray.tmin = 0;
+    ray.cone.width = sp.cone_width;  // the cone goes on from the hit
     return true;
 }
 

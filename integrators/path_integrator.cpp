@@ -116,7 +116,9 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
             if (sampler.get_1d() < q) break;
             beta /= 1 - q;
         }
+        const RayCone cone = bounce_cone(ray.cone, sp.cone_width, bs->pdf, bs->is_specular());
         ray = spawn_ray(sp, wi_world, std::numeric_limits<float>::infinity(), ray.time);
+        ray.cone = cone;
     }
     return L;
 }

@@ -11,7 +11,7 @@ Spectrum segment_transmittance(const RenderContext& ctx, const MediumStack& stac
     const Medium* medium = ctx.media.interior(stack.current());
     if (!medium || medium->is_clear()) return Spectrum(1);
     const float len = length(ray.d);
-    const Ray unit{ray.o, ray.d / len, 0, std::numeric_limits<float>::infinity(), ray.time};
+    const Ray unit{ray.o, ray.d / len, 0, std::numeric_limits<float>::infinity(), ray.time, {}};
     return medium->transmittance(unit, t * len);
 }
 

@@ -5,9 +5,11 @@
 namespace penumbra {
 
 void ImagePrefetch::record(std::pair<int, int> key, std::vector<uint8_t> bytes, std::string name,
-                           ImageEncoding encoding, const TextureDecodeLimits& limits) {
+                           ImageEncoding encoding, const TextureDecodeLimits& limits,
+                           bool mipmapped) {
     if (m_jobs.count(key)) return;
-    m_jobs.emplace(key, Job{std::move(bytes), std::move(name), encoding, limits, {}, nullptr});
+    m_jobs.emplace(key, Job{std::move(bytes), std::move(name), encoding, limits, mipmapped, {},
+                            nullptr});
 }
 
 void ImagePrefetch::decode_all() {
@@ -19,7 +21,8 @@ void ImagePrefetch::decode_all() {
     tbb::parallel_for(size_t(0), jobs.size(), [&](size_t i) {
         Job& job = *jobs[i];
         try {
-            job.image = decode_texture_image(job.bytes, job.name, job.encoding, job.limits);
+            job.image = decode_texture_image(job.bytes, job.name, job.encoding, job.limits,
+                                             job.mipmapped);
         } catch (...) {
             job.error = std::current_exception();
         }
@@ -27,7 +30,7 @@ void ImagePrefetch::decode_all() {
     });
 }
 
-bool ImagePrefetch::take(std::pair<int, int> key, Image* out) {
+bool ImagePrefetch::take(std::pair<int, int> key, TextureImage* out) {
     const auto it = m_jobs.find(key);
     if (it == m_jobs.end()) return false;
     Job job = std::move(it->second);

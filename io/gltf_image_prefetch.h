@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/image.h"
+#include "core/texture_image.h"
 #include "io/image_reader.h"
 
 namespace penumbra {
@@ -21,12 +21,12 @@ public:
     bool collecting() const { return m_collecting; }
     // Queues one image (glTF image index and encoding) for decoding; repeats are ignored.
     void record(std::pair<int, int> key, std::vector<uint8_t> bytes, std::string name,
-                ImageEncoding encoding, const TextureDecodeLimits& limits);
+                ImageEncoding encoding, const TextureDecodeLimits& limits, bool mipmapped);
     // Decodes every queued image, in parallel, keeping each result or exception.
     void decode_all();
     // The decoded image for `key`, once (it is moved out), or the exception its decoding
     // threw, rethrown; false when `key` was not prefetched (decode it as usual).
-    bool take(std::pair<int, int> key, Image* out);
+    bool take(std::pair<int, int> key, TextureImage* out);
 
 private:
     struct Job {
@@ -34,7 +34,8 @@ private:
         std::string name;
         ImageEncoding encoding;
         TextureDecodeLimits limits;
-        Image image;
+        bool mipmapped;
+        TextureImage image;
         std::exception_ptr error;
     };
     bool m_collecting = true;

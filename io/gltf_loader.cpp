@@ -249,7 +249,7 @@ Scene load_gltf(const std::string& path, const GltfLoadOptions& options, GltfLoa
     GltfLoadStats local;
     GltfLoadStats& st = stats ? *stats : local;
     StageClock clock;
-    const tinygltf::Model model = parse(path, options.strict);
+    tinygltf::Model model = parse(path, options.strict);
     st.parse = clock.lap();
     GltfContext ctx{model, path, options.rec709_to_working, options.light_units};
     ctx.strict = options.strict;
@@ -273,6 +273,8 @@ Scene load_gltf(const std::string& path, const GltfLoadOptions& options, GltfLoa
     load_meshes(ctx, scene, origins, mesh_checks);
     st.meshes = clock.lap();
     load_materials(ctx, scene);
+    // The images are decoded: their encoded bytes (from URIs) are not needed any more.
+    for (tinygltf::Image& image : model.images) std::vector<unsigned char>().swap(image.image);
     convert_scene_colors(scene, options.rec709_to_working);
     st.materials = clock.lap();
     const GltfAnimations animations(ctx);

@@ -21,6 +21,47 @@ TextureTable::TextureTable(const GltfContext& ctx, Scene& scene, ImagePrefetch* 
     : m_ctx(ctx), m_scene(scene), m_prefetch(prefetch) {
     for (const std::string& name : ctx.model.extensionsUsed)
         if (name == "EXT_texture_webp") m_allow_webp = true;
+    // An image gets a pyramid unless every texture using it samples without mipmaps
+    // (minFilter NEAREST or LINEAR); indices are checked where they are used.
+    for (const tinygltf::Texture& gt : ctx.model.textures) {
+        const bool valid_sampler =
+            gt.sampler >= 0 && size_t(gt.sampler) < ctx.model.samplers.size();
+        const int min_filter =
+            valid_sampler ? ctx.model.samplers[size_t(gt.sampler)].minFilter : -1;
+        if (min_filter == TINYGLTF_TEXTURE_FILTER_NEAREST ||
+            min_filter == TINYGLTF_TEXTURE_FILTER_LINEAR)
+            continue;
+        m_mipmapped.insert(gt.source);
+        const tinygltf::Value& webp = extension_object(gt.extensions, "EXT_texture_webp");
+        if (webp.IsObject() && webp.Has("source") && webp.Get("source").IsInt())
+            m_mipmapped.insert(webp.Get("source").GetNumberAsInt());
+    }
+}
+
+// glTF's minFilter (texture filter and mipmap filter in one enum); absent (-1) or
+// unknown: trilinear, the implementation's choice the spec allows.
+void TextureTable::set_min_filter(int filter, Texture& tex) {
+    switch (filter) {
+        case TINYGLTF_TEXTURE_FILTER_NEAREST:
+            tex.min_nearest = true;
+            tex.mip = MipFilter::None;
+            break;
+        case TINYGLTF_TEXTURE_FILTER_LINEAR:
+            tex.mip = MipFilter::None;
+            break;
+        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+            tex.min_nearest = true;
+            tex.mip = MipFilter::Nearest;
+            break;
+        case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+            tex.mip = MipFilter::Nearest;
+            break;
+        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
+            tex.min_nearest = true;
+            break;
+        default:
+            break;
+    }
 }
 
 TextureRef TextureTable::ref(const std::string& el, int texture, int texcoord,
@@ -87,6 +128,7 @@ int TextureTable::texture_index(int index, ImageEncoding encoding) {
         tex.wrap_s = wrap_mode(sel, "wrapS", s.wrapS);
         tex.wrap_t = wrap_mode(sel, "wrapT", s.wrapT);
         tex.nearest = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+        set_min_filter(s.minFilter, tex);
     }
     const int image = image_index(image_source(gt, el), encoding);
     if (image < 0) {  // undecodable: the texture is absent
@@ -132,28 +174,30 @@ int TextureTable::image_index(int index, ImageEncoding encoding) {
     const tinygltf::Image& gi = m_ctx.model.images[size_t(index)];
     const std::string el = element("images", size_t(index));
     const bool external = !gi.uri.empty() && gi.uri.compare(0, 5, "data:") != 0;
-    std::vector<uint8_t> bytes;
+    std::vector<uint8_t> view;
+    const std::vector<uint8_t>* bytes = &gi.image;  // captured undecoded by the image callback
     if (gi.bufferView >= 0)
-        bytes = buffer_view_bytes(m_ctx, el, gi.bufferView);
-    else if (!gi.image.empty())
-        bytes = gi.image;  // captured undecoded by the loader's image callback
-    else if (external)
+        bytes = &(view = buffer_view_bytes(m_ctx, el, gi.bufferView));
+    else if (gi.image.empty() && external)
         m_ctx.fail(el, "cannot read image file '" + gi.uri + "'");
-    else
+    else if (gi.image.empty())
         m_ctx.fail(el, "has no image data");
     const std::string label = external ? gi.uri : gi.name;
     const std::string named = label.empty() ? el : el + " ('" + label + "')";
     TextureDecodeLimits limits;
     limits.allow_webp = m_allow_webp;
     limits.max_pixels = m_ctx.max_texture_pixels;
-    Image img;
+    TextureImage img;
     try {
+        const bool mipmapped = m_mipmapped.count(index) > 0;
         if (m_prefetch && m_prefetch->collecting()) {
-            m_prefetch->record(key, std::move(bytes), m_ctx.file + ": " + named, encoding, limits);
+            m_prefetch->record(key, *bytes, m_ctx.file + ": " + named, encoding, limits,
+                               mipmapped);
             return 0;  // a dry run's placeholder
         }
         if (!m_prefetch || !m_prefetch->take(key, &img))
-            img = decode_texture_image(bytes, m_ctx.file + ": " + named, encoding, limits);
+            img = decode_texture_image(*bytes, m_ctx.file + ": " + named, encoding, limits,
+                                       mipmapped);
     } catch (const ImageDecodeError& e) {
         // Renderable without it: the textures using it are left out, so their materials
         // use their factors alone; one warning per image, whichever encodings use it.

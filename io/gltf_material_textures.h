@@ -35,6 +35,7 @@ private:
     int texture_index(int index, ImageEncoding encoding);
     int image_source(const tinygltf::Texture& gt, const std::string& el) const;
     int image_index(int index, ImageEncoding encoding);
+    static void set_min_filter(int filter, Texture& tex);
     WrapMode wrap_mode(const std::string& el, const char* what, int mode) const;
 
     const GltfContext& m_ctx;
@@ -43,6 +44,7 @@ private:
     std::map<std::pair<int, int>, int> m_textures, m_images;  // -1: undecodable
     std::set<int> m_undecodable;                              // glTF image indices
     ImagePrefetch* m_prefetch = nullptr;
+    std::set<int> m_mipmapped;  // glTF images that a texture samples with mipmaps
 };
 
 }  // namespace penumbra

@@ -50,18 +50,23 @@ std::string too_large(uint32_t w, uint32_t h, uint64_t max_pixels) {
            std::to_string(max_pixels) + " pixels (--max-texture-pixels)";
 }
 
-// Decodes with OIIO's reader for `ext`, refusing more than max_pixels before reading
-// pixels. OIIO's readers throw on some corrupt data (the GIF reader std::length_error),
-// so anything they throw becomes an ImageDecodeError naming the image.
-Image decode_with(const std::vector<uint8_t>& bytes, const std::string& name, const char* ext,
-                  ImageEncoding encoding, uint64_t max_pixels) {
+// Opens the bytes with OIIO's reader for `ext`, refusing more than max_pixels before
+// reading pixels, and returns what read(input, spec, channels) makes of them. OIIO's
+// readers throw on some corrupt data (the GIF reader std::length_error), so anything
+// they throw becomes an ImageDecodeError naming the image.
+template <class Read>
+auto decode_with(const std::vector<uint8_t>& bytes, const std::string& name, const char* ext,
+                 uint64_t max_pixels, Read read) {
     try {
         OIIO::Filesystem::IOMemReader proxy(bytes.data(), bytes.size());
         auto in = OIIO::ImageInput::create(ext, false, nullptr, &proxy);
-        OIIO::ImageSpec spec_in;
+        OIIO::ImageSpec spec_in, config;
+        // glTF's alpha is unassociated (straight): OIIO would otherwise premultiply the
+        // colour of PNGs (and other straight-alpha formats) by it while reading.
+        config.attribute("oiio:UnassociatedAlpha", 1);
         if (!in || !in->supports("ioproxy"))
             throw ImageDecodeError(name, std::string("no reader for format '") + ext + "'");
-        if (!in->set_ioproxy(&proxy) || !in->open(std::string("memory.") + ext, spec_in))
+        if (!in->set_ioproxy(&proxy) || !in->open(std::string("memory.") + ext, spec_in, config))
             throw ImageDecodeError(name, one_line(in->geterror()));
 
         const OIIO::ImageSpec& spec = in->spec();
@@ -72,15 +77,9 @@ Image decode_with(const std::vector<uint8_t>& bytes, const std::string& name, co
             throw ImageDecodeError(
                 name, too_large(uint32_t(spec.width), uint32_t(spec.height), max_pixels));
         // More than RGBA (e.g. EXR layers) is cut to the first four channels.
-        const int channels = std::min(spec.nchannels, 4);
-        Image img(spec.width, spec.height, channels);
-        img.name = name;
-        if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
-            throw ImageDecodeError(name, one_line(in->geterror()));
+        auto result = read(*in, spec, std::min(spec.nchannels, 4));
         in->close();
-        // The transfer applies to colour, never to alpha (glTF 2.0, section 3.9.2).
-        if (encoding == ImageEncoding::Srgb) decode_srgb(img);
-        return img;
+        return result;
     } catch (const ImageDecodeError&) {
         throw;
     } catch (const std::exception& e) {
@@ -89,22 +88,79 @@ Image decode_with(const std::vector<uint8_t>& bytes, const std::string& name, co
     }
 }
 
+Image decode_float(const std::vector<uint8_t>& bytes, const std::string& name, const char* ext,
+                   ImageEncoding encoding, uint64_t max_pixels) {
+    return decode_with(
+        bytes, name, ext, max_pixels,
+        [&](OIIO::ImageInput& in, const OIIO::ImageSpec& spec, int channels) {
+            Image img(spec.width, spec.height, channels);
+            img.name = name;
+            if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
+                throw ImageDecodeError(name, one_line(in.geterror()));
+            // The transfer applies to colour, never to alpha (glTF 2.0,
+            // section 3.9.2).
+            if (encoding == ImageEncoding::Srgb) decode_srgb(img);
+            return img;
+        });
+}
+
+// The file's own precision: 8-bit and 16-bit files are read straight into texel storage
+// of that size (never through float, which would cost 4 bytes a channel at the peak);
+// anything else (float, half, 32-bit) as float. The pyramid's levels are allocated with
+// level 0, so nothing is copied afterwards.
+TextureImage decode_texels(const std::vector<uint8_t>& bytes, const std::string& name,
+                           const char* ext, ImageEncoding encoding, uint64_t max_pixels,
+                           bool mipmaps) {
+    return decode_with(
+        bytes, name, ext, max_pixels,
+        [&](OIIO::ImageInput& in, const OIIO::ImageSpec& spec, int channels) {
+            const OIIO::TypeDesc::BASETYPE base = OIIO::TypeDesc::BASETYPE(spec.format.basetype);
+            const bool is8 = base == OIIO::TypeDesc::UINT8 || base == OIIO::TypeDesc::INT8;
+            const bool is16 = base == OIIO::TypeDesc::UINT16 || base == OIIO::TypeDesc::INT16;
+            const TexelFormat format = is8    ? TexelFormat::U8
+                                       : is16 ? TexelFormat::U16
+                                              : TexelFormat::F32;
+            const OIIO::TypeDesc type = is8    ? OIIO::TypeDesc::UINT8
+                                        : is16 ? OIIO::TypeDesc::UINT16
+                                               : OIIO::TypeDesc::FLOAT;
+            const bool srgb = encoding == ImageEncoding::Srgb;
+            TextureImage img(spec.width, spec.height, channels, format, srgb, mipmaps);
+            if (!in.read_image(0, 0, 0, channels, type, img.level0_data()))
+                throw ImageDecodeError(name, one_line(in.geterror()));
+            if (format == TexelFormat::F32 && srgb) {
+                // Float colour data with the sRGB transfer (not a glTF format, but OIIO
+                // may report one): decoded now, as float storage holds linear values.
+                float* p = static_cast<float*>(img.level0_data());
+                const size_t n = size_t(spec.width) * size_t(spec.height);
+                for (size_t i = 0; i < n; ++i)
+                    for (int c = 0; c < std::min(channels, 3); ++c)
+                        if (!(channels == 2 && c == 1))
+                            p[i * size_t(channels) + size_t(c)] =
+                                srgb_to_linear(p[i * size_t(channels) + size_t(c)]);
+            }
+            img.build_mips();
+            return img;
+        });
+}
+
 }  // namespace
 
-Image decode_texture_image(const std::vector<uint8_t>& bytes, const std::string& name,
-                           ImageEncoding encoding, const TextureDecodeLimits& limits) {
+TextureImage decode_texture_image(const std::vector<uint8_t>& bytes, const std::string& name,
+                                  ImageEncoding encoding, const TextureDecodeLimits& limits,
+                                  bool mipmaps) {
     if (bytes.empty()) throw ImageDecodeError(name, "no data");
     const ImageHeader h = read_image_header(bytes, limits.allow_webp);
     // The size first: a header claiming too much is refused for that, whatever follows.
     if (h.format != ImageFormat::Unknown && uint64_t(h.width) * h.height > limits.max_pixels)
         throw ImageDecodeError(name, too_large(h.width, h.height, limits.max_pixels));
     if (!h.problem.empty()) throw ImageDecodeError(name, h.problem);
-    Image img = decode_with(bytes, name, image_extension(h.format), encoding, limits.max_pixels);
-    if (uint32_t(img.width) != h.width || uint32_t(img.height) != h.height)
+    TextureImage img =
+        decode_texels(bytes, name, image_extension(h.format), encoding, limits.max_pixels, mipmaps);
+    if (uint32_t(img.width()) != h.width || uint32_t(img.height()) != h.height)
         throw ImageDecodeError(name, "the header says " + std::to_string(h.width) + "x" +
                                          std::to_string(h.height) + ", the decoder " +
-                                         std::to_string(img.width) + "x" +
-                                         std::to_string(img.height));
+                                         std::to_string(img.width()) + "x" +
+                                         std::to_string(img.height()));
     return img;
 }
 
@@ -122,7 +178,7 @@ Image decode_image(const std::vector<uint8_t>& bytes, const std::string& name,
         if (!has_ext) throw ImageDecodeError(name, "unrecognised format");
         ext = name.c_str() + dot + 1;
     }
-    return decode_with(bytes, name, ext, encoding, kDefaultMaxTexturePixels);
+    return decode_float(bytes, name, ext, encoding, kDefaultMaxTexturePixels);
 }
 
 Image read_image(const std::string& path, ImageEncoding encoding) {

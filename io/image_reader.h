@@ -1,6 +1,6 @@
-// Decoding images (files or bytes in memory) into linear float Images. Colour data stored
-// with the sRGB transfer is converted on request (by io/color.h, the one definition of
-// the sRGB curve). glTF images are held to the formats glTF allows, by their bytes.
+// Decoding images (files or bytes in memory): glTF textures into TextureImages at their
+// own precision (sRGB decoded at lookup), other images into linear float Images (sRGB
+// converted by io/color.h). glTF images are held to the formats glTF allows, by their bytes.
 #pragma once
 
 #include <cstdint>
@@ -9,13 +9,14 @@
 
 #include "core/error.h"
 #include "core/image.h"
+#include "core/texture_image.h"
 
 namespace penumbra {
 
 enum class ImageEncoding { Linear, Srgb };
 
-// 2^28 pixels (16k x 16k): 4 GiB as float RGBA, more than any texture a renderer on one
-// machine should take on without being asked.
+// 2^28 pixels (16k x 16k): 1.3 GiB as RGBA8 with its pyramid (4 GiB as float RGBA), more
+// than any texture a renderer on one machine should take on without being asked.
 constexpr uint64_t kDefaultMaxTexturePixels = uint64_t(1) << 28;
 
 // A SceneError "<name>: cannot decode image: <why>" that keeps `why` apart, for callers
@@ -38,10 +39,13 @@ struct TextureDecodeLimits {
 };
 
 // A glTF image's bytes: the format from their signature (never the name or OIIO's
-// guess) and the size from their header, checked before decoding. Throws
-// ImageDecodeError naming `name`.
-Image decode_texture_image(const std::vector<uint8_t>& bytes, const std::string& name,
-                           ImageEncoding encoding, const TextureDecodeLimits& limits);
+// guess) and the size from their header, checked before decoding; 8-bit and 16-bit
+// files stay so, with the MIP pyramid unless mipmaps is false. Throws ImageDecodeError
+// naming `name`. (OIIO's TextureSystem is not used: it reads files through its own
+// cache, and glTF images are mostly bytes in buffers or data URIs.)
+TextureImage decode_texture_image(const std::vector<uint8_t>& bytes, const std::string& name,
+                                  ImageEncoding encoding, const TextureDecodeLimits& limits,
+                                  bool mipmaps = true);
 
 // Any format OpenImageIO reads (the user's own files, e.g. an EXR environment map), by
 // signature or else the name's extension. Throws ImageDecodeError naming `name`.

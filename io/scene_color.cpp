@@ -36,8 +36,11 @@ void convert_scene_colors(Scene& scene, const Mat3& m) {
             note(*r);
     }
     // The loader decodes an image once per encoding, so an image that a colour texture
-    // uses holds colour only, even if a data texture shares the file.
-    for (uint32_t index : colour_images) convert_image_colors(scene.images[index], m);
+    // uses holds colour only, even if a data texture shares the file. Texels stay as the
+    // file has them (8-bit sRGB cannot hold another space's values): the lookup applies
+    // the matrix after filtering, the same linear map as converting every texel.
+    for (uint32_t index : colour_images)
+        if (scene.images[index].channels() >= 3) scene.images[index].set_color_matrix(m);
     for (TriangleMesh& mesh : scene.meshes)
         for (Vec4& c : mesh.colors) c = Vec4(m * c.xyz(), c.w);
 }

@@ -10,7 +10,8 @@ namespace penumbra {
 
 // Converts the colours of a loaded scene in place: material colour factors (base,
 // emissive, specular, sheen, attenuation, diffuse transmission), the images of colour
-// textures (the sRGB-encoded ones; RGB only, alpha untouched) and vertex colours. Data
+// textures (the sRGB-encoded ones, RGB of 3 or 4 channels, alpha untouched: a matrix the
+// lookup applies after filtering) and vertex colours. Data
 // (metallic-roughness, normal, occlusion, transmission textures and factors) stays as it
 // is. Lights are converted as the loader builds them (they hold their colour privately).
 // Does nothing for the identity, so Rec.709 renders are unchanged bit for bit.

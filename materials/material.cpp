@@ -25,7 +25,8 @@ namespace {
 
 Vec4 sample_texture(const Scene& scene, const TextureRef& ref, const SurfacePoint& sp) {
     const Texture& tex = scene.textures[ref.texture];
-    return lookup(tex, scene.images[tex.image], ref.uv(sp.uv0, sp.uv1));
+    return lookup(tex, scene.images[tex.image], ref.uv(sp.uv0, sp.uv1),
+                  ref.width(sp.uv_width[0], sp.uv_width[1]));
 }
 
 // Tangent-space normal map (glTF: +X right/u, +Y up/v, Z out) to a world normal.
@@ -143,7 +144,7 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
 
     // Single-sided emitters (doubleSided false) emit from the glTF front face only.
     if (emits_towards(m, front_normal(sp), wo))
-        sd.emission = emitted_radiance(scene, m, sp.uv0, sp.uv1);
+        sd.emission = emitted_radiance(scene, m, sp.uv0, sp.uv1, sp.uv_width);
 
     float transmission = m.transmission;
     if (transmission > 0 && m.transmission_texture.valid())

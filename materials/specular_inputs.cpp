@@ -11,7 +11,8 @@ namespace {
 
 Vec4 texel(const Scene& scene, const TextureRef& ref, const SurfacePoint& sp) {
     const Texture& tex = scene.textures[ref.texture];
-    return lookup(tex, scene.images[tex.image], ref.uv(sp.uv0, sp.uv1));
+    return lookup(tex, scene.images[tex.image], ref.uv(sp.uv0, sp.uv1),
+                  ref.width(sp.uv_width[0], sp.uv_width[1]));
 }
 
 }  // namespace

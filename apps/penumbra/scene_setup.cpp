@@ -245,6 +245,17 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     s->scene = load_gltf(path, load, &load_stats);
     s->load_seconds = since(t0);
     Scene& scene = s->scene;
+    if (!scene.images.empty()) {
+        // What the texture store costs (docs/performance.md), pyramids included.
+        double bytes = 0, texels = 0;
+        for (const TextureImage& img : scene.images) {
+            bytes += double(img.bytes());
+            texels += double(img.texel_count());
+        }
+        LOG_INFO(path << ": textures: " << scene.images.size() << " images, " << texels / 1e6
+                      << " Mtexels, " << bytes / (1 << 20) << " MiB with mipmaps ("
+                      << bytes / texels << " B/texel)");
+    }
 
     // Image size: what the user asked, completed from the camera's aspect ratio.
     const CameraDesc* file_cam = nullptr;

@@ -13,6 +13,7 @@ Ray OrthographicCamera::generate_ray(const CameraSample& s) const {
     r.o = m_to_world.point(Vec3(ndc_x * m_xmag, ndc_y * m_ymag, 0));
     r.d = normalize(m_to_world.vector(Vec3(0, 0, -1)));
     r.time = s.time;
+    r.cone.width = 2 * m_ymag / m_height;  // one pixel, at every distance
     return r;
 }
 

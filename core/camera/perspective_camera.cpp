@@ -20,6 +20,8 @@ Ray PerspectiveCamera::generate_ray(const CameraSample& s) const {
     r.o = m_to_world.point(Vec3(0, 0, 0));
     r.d = normalize(m_to_world.vector(d_cam));
     r.time = s.time;
+    // One pixel's angle at the image centre (Akenine-Moller et al. 2021, eq. 30).
+    r.cone.spread = 2 * m_tan_half_y / m_height;
     return r;
 }
 

@@ -36,6 +36,8 @@ Ray ThinLensCamera::generate_ray(const CameraSample& s) const {
     r.o = m_to_world.point(p_lens);
     r.d = normalize(m_to_world.vector(p_focus - p_lens));
     r.time = s.time;
+    // The pinhole's pixel angle: defocus blur is not part of the texture footprint.
+    r.cone.spread = 2 * m_tan_half_y / m_height;
     return r;
 }
 

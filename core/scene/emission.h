@@ -7,7 +7,10 @@
 
 namespace penumbra {
 
-Spectrum emitted_radiance(const Scene& scene, const MaterialDesc& m, Vec2 uv0, Vec2 uv1);
+// uv_width: the footprint in each UV set (SurfacePoint::uv_width); null (light sampling,
+// which has no ray cone) reads the finest level.
+Spectrum emitted_radiance(const Scene& scene, const MaterialDesc& m, Vec2 uv0, Vec2 uv1,
+                          const float* uv_width = nullptr);
 // Whether the material emits towards w from a surface whose glTF front face looks along
 // n_front: a single-sided material (doubleSided false, the default) emits from its front
 // only, a double-sided one from both faces. The one rule of the area lights and shade().

@@ -19,6 +19,10 @@ struct TextureRef {
     Vec2 scale{1, 1};
 
     bool valid() const { return texture >= 0; }
+    // A footprint w0 (w1) wide in UV set 0 (1) as a width in the coordinates read.
+    float width(float w0, float w1) const {
+        return (texcoord == 1 ? w1 : w0) * std::sqrt(std::abs(scale.x * scale.y));
+    }
     // The texture coordinates this reference reads at a point with UV sets uv0 and uv1.
     Vec2 uv(Vec2 uv0, Vec2 uv1) const {
         const Vec2 p = texcoord == 1 ? uv1 : uv0;

@@ -89,7 +89,7 @@ struct Scene {
     std::vector<Object> objects;
     std::vector<Instance> instances;
     std::vector<MaterialDesc> materials;
-    std::vector<Image> images;
+    std::vector<TextureImage> images;  // the textures' images, at their own precision
     std::vector<Texture> textures;
     std::vector<CameraDesc> cameras;
     std::vector<std::unique_ptr<Light>> lights;

@@ -58,9 +58,9 @@ TEST(GltfImagePrefetch, ImagesWarningsAndOrderAreThoseOfASerialLoad) {
         // material 2's data texture is image 0 again, linear, between images 5 and 4.
         std::vector<std::string> names;
         std::vector<int> widths;
-        for (const Image& img : s.images) {
+        for (const TextureImage& img : s.images) {
             names.push_back(img.name);
-            widths.push_back(img.width);
+            widths.push_back(img.width());
         }
         EXPECT_EQ(names, (std::vector<std::string>{"img7.png", "img6.png", "img0.png", "img4.png",
                                                    "img3.png", "img2.png", "img1.png", "img0.png"}))

@@ -72,7 +72,7 @@ TEST(GltfLoader, BoxTexturedDecodesItsSrgbTexture) {
     const Texture& tex = s.textures[size_t(mat.base_color_texture.texture)];
     EXPECT_EQ(tex.wrap_s, WrapMode::Repeat);
     EXPECT_FALSE(tex.nearest);
-    const Image& img = s.images[tex.image];
+    const Image img = s.images[tex.image].to_image();
     EXPECT_EQ(img.width, 211);
     EXPECT_EQ(img.height, 211);
     EXPECT_EQ(s.meshes[0].uv0.size(), 24u);

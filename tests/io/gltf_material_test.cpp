@@ -67,8 +67,8 @@ TEST(GltfMaterial, SrgbAndLinearDecodingOfOneImage) {
     EXPECT_TRUE(srgb.nearest);
     EXPECT_EQ(srgb.wrap_s, WrapMode::ClampToEdge);
     EXPECT_EQ(srgb.wrap_t, WrapMode::MirroredRepeat);
-    const Image& a = s.images[srgb.image];
-    const Image& l = s.images[lin.image];
+    const Image a = s.images[srgb.image].to_image();
+    const Image l = s.images[lin.image].to_image();
     ASSERT_EQ(a.width, 2);
     ASSERT_EQ(a.channels, 3);
     // sRGB: back to (about) the linear values written; linear: the stored 8-bit code.
@@ -100,8 +100,42 @@ TEST(GltfMaterial, ImageFromBufferViewAndFile) {
         const Scene s = load_gltf(b.write(dir, name, members, storage));
         ASSERT_EQ(s.images.size(), 1u) << name;
         // Emissive textures are sRGB.
-        EXPECT_NEAR(s.images[0].at(0, 0)[0], srgb_to_linear(quantized(0.2140f)), 1e-6f) << name;
+        EXPECT_NEAR(s.images[0].texel(0, 0, 0).x, srgb_to_linear(quantized(0.2140f)), 1e-6f) << name;
         EXPECT_TRUE(s.materials[0].emissive_texture.valid());
+    }
+}
+
+// glTF minFilter to the lookup's filters; an image gets a pyramid unless every sampler
+// that uses it has a minFilter without mipmaps (NEAREST, LINEAR).
+TEST(GltfMaterial, MinFiltersAndMipmaps) {
+    ScratchDir dir;
+    const std::vector<uint8_t> png = write_png(dir, "tex.png");
+    const std::string uri = R"({"uri": "data:image/png;base64,)" + test::base64(png) + R"("})";
+    struct Case {
+        int min_filter;  // -1: absent
+        MipFilter mip;
+        bool min_nearest;
+    };
+    for (const Case c : {Case{-1, MipFilter::Linear, false}, Case{9728, MipFilter::None, true},
+                         Case{9729, MipFilter::None, false}, Case{9984, MipFilter::Nearest, true},
+                         Case{9985, MipFilter::Nearest, false}, Case{9986, MipFilter::Linear, true},
+                         Case{9987, MipFilter::Linear, false}}) {
+        SCOPED_TRACE(c.min_filter);
+        GltfBuilder b;
+        add_quad(b);
+        const std::string sampler =
+            c.min_filter < 0 ? "{}" : R"({"minFilter": )" + std::to_string(c.min_filter) + "}";
+        const std::string members = R"("images": [)" + uri + R"(], "samplers": [)" + sampler +
+                                    R"(], "textures": [{"source": 0, "sampler": 0}],
+          "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],)" +
+                                    test::one_mesh_scene(quad_primitive(0));
+        const Scene s = load_gltf(b.write(dir, "min.gltf", members, BufferStorage::DataUri));
+        ASSERT_EQ(s.textures.size(), 1u);
+        EXPECT_EQ(s.textures[0].mip, c.mip);
+        EXPECT_EQ(s.textures[0].min_nearest, c.min_nearest);
+        EXPECT_FALSE(s.textures[0].nearest);
+        EXPECT_EQ(s.images[0].levels(), c.mip == MipFilter::None ? 1 : 2);  // 2x1, 1x1
+        EXPECT_EQ(s.images[0].format(), TexelFormat::U8);
     }
 }
 

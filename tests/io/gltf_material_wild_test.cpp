@@ -158,8 +158,8 @@ TEST(GltfMaterialWild, WebpTexturesRequiredAndWithFallback) {
         ASSERT_TRUE(s->materials[0].base_color_texture.valid());
         ASSERT_EQ(s->images.size(), 1u);
     }
-    const Image& a = req.images[0];
-    const Image& b = fb.images[0];
+    const Image a = req.images[0].to_image();
+    const Image b = fb.images[0].to_image();
     ASSERT_GT(a.width, 16);
     ASSERT_EQ(a.width, b.width);
     ASSERT_EQ(a.height, b.height);

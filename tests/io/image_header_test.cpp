@@ -59,9 +59,9 @@ TEST(ImageHeader, PngAndJpegDimensionsAgreeWithTheDecoder) {
             EXPECT_EQ(hd.format, ext[0] == 'p' ? ImageFormat::Png : ImageFormat::Jpeg);
             EXPECT_EQ(hd.width, uint32_t(w));
             EXPECT_EQ(hd.height, uint32_t(h));
-            const Image img = decode_texture_image(b, "a", ImageEncoding::Linear, {});
-            EXPECT_EQ(img.width, w);
-            EXPECT_EQ(img.height, h);
+            const TextureImage img = decode_texture_image(b, "a", ImageEncoding::Linear, {});
+            EXPECT_EQ(img.width(), w);
+            EXPECT_EQ(img.height(), h);
         }
     }
 }
@@ -163,7 +163,7 @@ TEST(ImageHeader, SizeLimitBeforeDecoding) {
     std::vector<uint8_t> png = encoded(dir, "a.png", 3, 2);
     TextureDecodeLimits limits;
     limits.max_pixels = 6;
-    EXPECT_EQ(decode_texture_image(png, "a", ImageEncoding::Linear, limits).width, 3);
+    EXPECT_EQ(decode_texture_image(png, "a", ImageEncoding::Linear, limits).width(), 3);
     limits.max_pixels = 5;
     try {
         decode_texture_image(png, "a", ImageEncoding::Linear, limits);

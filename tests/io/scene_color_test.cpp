@@ -82,15 +82,20 @@ TEST(SceneColor, AcescgLoadConvertsColoursButNotData) {
     EXPECT_EQ(cg.meshes[0].colors[2].w, 0.5f);
     expect_near(light_at_origin(cg), ocio(light_at_origin(rec709)), 1e-5f);
 
-    const Image& colour_a = rec709.images[rec709.textures[a.base_color_texture.texture].image];
-    const Image& colour_b = cg.images[cg.textures[b.base_color_texture.texture].image];
-    ASSERT_EQ(colour_a.channels, 3);
-    expect_near({colour_b.pixels[0], colour_b.pixels[1], colour_b.pixels[2]},
-                ocio({colour_a.pixels[0], colour_a.pixels[1], colour_a.pixels[2]}), 1e-5f);
-    // The normal map decodes the same file as data: identical in both.
-    const Image& data_a = rec709.images[rec709.textures[a.normal_texture.texture].image];
-    const Image& data_b = cg.images[cg.textures[b.normal_texture.texture].image];
-    EXPECT_EQ(data_a.pixels, data_b.pixels);
+    // Colour textures keep their texels; the lookup (texel 0's centre) converts.
+    const Texture& tex_a = rec709.textures[a.base_color_texture.texture];
+    const Texture& tex_b = cg.textures[b.base_color_texture.texture];
+    const TextureImage& colour_a = rec709.images[tex_a.image];
+    const TextureImage& colour_b = cg.images[tex_b.image];
+    ASSERT_EQ(colour_a.channels(), 3);
+    const Vec2 centre(0.5f / colour_a.width(), 0.5f / colour_a.height());
+    EXPECT_EQ(lookup(tex_a, colour_a, centre).xyz(), colour_a.texel(0, 0, 0).xyz());
+    expect_near(lookup(tex_b, colour_b, centre).xyz(), ocio(colour_a.texel(0, 0, 0).xyz()), 1e-5f);
+    // The normal map decodes the same file as data: identical in both, unconverted.
+    const TextureImage& data_a = rec709.images[rec709.textures[a.normal_texture.texture].image];
+    const TextureImage& data_b = cg.images[cg.textures[b.normal_texture.texture].image];
+    EXPECT_EQ(data_a.to_image().pixels, data_b.to_image().pixels);
+    EXPECT_FALSE(data_b.color_matrix());
 }
 
 TEST(SceneColor, Rec709WorkingSpaceChangesNothing) {
@@ -99,7 +104,8 @@ TEST(SceneColor, Rec709WorkingSpaceChangesNothing) {
     GltfLoadOptions lo;
     lo.rec709_to_working = ColorPipeline::builtin().rec709_to_working();
     const Scene a = load_gltf(path), b = load_gltf(path, lo);
-    EXPECT_EQ(a.images[0].pixels, b.images[0].pixels);
+    EXPECT_EQ(a.images[0].to_image().pixels, b.images[0].to_image().pixels);
+    EXPECT_FALSE(b.images[0].color_matrix());
     EXPECT_EQ(a.materials[0].base_color.x, b.materials[0].base_color.x);
     EXPECT_EQ(light_at_origin(a), light_at_origin(b));
 }

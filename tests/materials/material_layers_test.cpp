@@ -25,7 +25,7 @@ SurfacePoint flat_point(int material) {
 int add_texture(Scene& scene, Vec4 v) {
     Image img(1, 1, 4);
     for (int c = 0; c < 4; ++c) img.at(0, 0)[c] = v[c];
-    scene.images.push_back(img);
+    scene.images.push_back(TextureImage(img));
     Texture tex;
     tex.image = uint32_t(scene.images.size() - 1);
     tex.nearest = true;

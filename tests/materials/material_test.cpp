@@ -178,7 +178,7 @@ TEST(Shade, TextureTransformMovesLookups) {
     const float texels[4][4] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}, {1, 1, 1, 1}};
     for (int i = 0; i < 4; ++i)
         for (int c = 0; c < 4; ++c) img.at(i % 2, i / 2)[c] = texels[i][c];
-    scene.images.push_back(img);
+    scene.images.push_back(TextureImage(img));
     Texture tex;
     tex.nearest = true;
     scene.textures.push_back(tex);

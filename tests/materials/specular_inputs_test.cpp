@@ -14,7 +14,7 @@ namespace {
 TextureRef add_texel(Scene& scene, Vec4 rgba) {
     Image img(1, 1, 4);
     for (int c = 0; c < 4; ++c) img.pixels[c] = rgba[c];
-    scene.images.push_back(img);
+    scene.images.push_back(TextureImage(img));
     Texture tex;
     tex.image = uint32_t(scene.images.size() - 1);
     scene.textures.push_back(tex);

@@ -21,7 +21,9 @@ inline constexpr unsigned char kTexel[4] = {51, 102, 204, 153};
 inline std::string png_uri(const ScratchDir& dir, const unsigned char* texel = kTexel) {
     const std::string path = dir.file("t.png");
     auto out = OIIO::ImageOutput::create(path);
-    EXPECT_TRUE(out && out->open(path, OIIO::ImageSpec(1, 1, 4, OIIO::TypeDesc::UINT8)));
+    OIIO::ImageSpec spec(1, 1, 4, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:UnassociatedAlpha", 1);  // the file holds `texel` as given
+    EXPECT_TRUE(out && out->open(path, spec));
     out->write_image(OIIO::TypeDesc::UINT8, texel);
     out->close();
     std::ifstream f(path, std::ios::binary);

@@ -109,6 +109,8 @@ TEST(EmbreeAccel, SharesPaddedVertexArraysAndCopiesOthers) {
         EXPECT_EQ(ha->t, hb->t);
     }
     EXPECT_EQ(hits, 2000);
+}
+
 // Packets and streams (bench/accel_bench.cpp measures them) answer exactly what single
 // rays do, including rays with short intervals and untraceable ones.
 TEST(EmbreeAccel, PacketsAndStreamsAgreeWithSingleRays) {

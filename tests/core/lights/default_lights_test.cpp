@@ -68,7 +68,7 @@ TEST(DefaultLights, EmitterPowerIsWorldAreaTimesPiTimesMeanRadiance) {
     // An emission texture scales by its mean: a 2 x 2 image with one texel of 1, three of 0.
     Image img(2, 2, 3);
     img.pixels = {1, 1, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0};
-    s.images.push_back(img);
+    s.images.push_back(TextureImage(img));
     s.textures.push_back(Texture{0});
     s.materials.back().emissive_texture.texture = 0;
     EXPECT_NEAR(summarize_emitters(s).mean_radiance(), 2.5, 1e-5);
@@ -87,7 +87,7 @@ TEST(DefaultLights, HelmetLikeScenesGetTheDefaultLighting) {
     Image img(5, 5, 3);
     img.pixels.assign(img.pixels.size(), 0.0f);
     img.at(2, 2)[0] = img.at(2, 2)[1] = img.at(2, 2)[2] = 1.0f;
-    decal.images.push_back(img);
+    decal.images.push_back(TextureImage(img));
     decal.textures.push_back(Texture{0});
     decal.materials.back().emissive_texture.texture = 0;
     const LightingChoice dim = choose_lighting(DefaultLightMode::Auto, decal, false);
