@@ -31,7 +31,8 @@ public:
             "frame",  "spp",    "seed",       "time",     "time_limit", "fps",
             "shutter", "shutter_open", "shutter_close", "ocio_config", "working_space",
             "output_colorspace", "display", "view", "look", "aov", "half", "compression",
-            "light_units", "default_light", "exposure", "strict", "max_texture_pixels"};
+            "light_units", "default_light", "exposure", "strict", "max_texture_pixels",
+            "light_sampler", "triangle_sampling"};
         for (const auto& [key, value] : m_object.items()) {
             bool known = false;
             for (const char* k : kKeys) known = known || key == k;
@@ -95,6 +96,8 @@ public:
         }
         choice("light_units", s.light_units, {"photometric", "radiometric"});
         choice("default_light", s.default_light, {"auto", "on", "off"});
+        choice("light_sampler", s.light_sampler, {"uniform", "power", "bvh"});
+        choice("triangle_sampling", s.triangle_sampling, {"area", "solid-angle"});
         number("exposure", s.exposure, false);
         if (s.exposure && std::abs(*s.exposure) > 64)
             fail("exposure", "expected stops in [-64, 64]");

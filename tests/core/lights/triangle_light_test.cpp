@@ -62,8 +62,8 @@ TEST(TriangleLight, SingleSidedEmitsFromItsFrontOnlyAndTwoSidedFromBoth) {
         EXPECT_GT(pdf_above, 0);
         // The two points are mirror images through the plane: equal densities.
         EXPECT_NEAR(pdf_below, two_sided ? pdf_above : 0.0f, 1e-4f * pdf_above);
-        EXPECT_NEAR(light.pdf_at(above, c, 0), pdf_above, 1e-4f * pdf_above);
-        EXPECT_NEAR(light.pdf_at(below, c, 0), pdf_below, 1e-4f * pdf_above);
+        EXPECT_NEAR(light.pdf_at({above, {}}, c, 0), pdf_above, 1e-4f * pdf_above);
+        EXPECT_NEAR(light.pdf_at({below, {}}, c, 0), pdf_below, 1e-4f * pdf_above);
     }
 }
 
@@ -100,7 +100,7 @@ void expect_sides_agree(const Scene& scene, float time, Vec3 front, const char* 
             const bool lit = !is_black(shade(scene, sp, wo).emission);
             const bool faces_ref = dot(front, wo) > 0;
             EXPECT_EQ(lit, faces_ref || light.two_sided()) << what << " prim " << prim;
-            EXPECT_EQ(light.pdf_at(ref, sp.p, time) > 0, lit) << what;
+            EXPECT_EQ(light.pdf_at({ref, {}}, sp.p, time) > 0, lit) << what;
             EXPECT_EQ(light.pdf_Li({ref, {}}, -wo, time) > 0, lit) << what;
             EXPECT_EQ(sample_count(light, ref, time, 4) == 4, lit) << what;
             (lit ? emitting : dark)++;
