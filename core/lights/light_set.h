@@ -31,9 +31,12 @@ LightSamplerType parse_light_sampler(const std::string& name);
 // Throws std::invalid_argument for a name other than area or solid-angle.
 TriangleSampling parse_triangle_sampling(const std::string& name);
 
+// The defaults measured best at equal time on the Cornell box and on 10,000 emitters on
+// a dome (docs/performance.md, "Light sampling at scale"); bvh and solid-angle pay where
+// emitters are large and close or spread far apart (the hall scene there).
 struct LightSetOptions {
-    LightSamplerType sampler = LightSamplerType::Bvh;
-    TriangleSampling triangles = TriangleSampling::SolidAngle;
+    LightSamplerType sampler = LightSamplerType::Power;
+    TriangleSampling triangles = TriangleSampling::Area;
 };
 
 class LightSet {

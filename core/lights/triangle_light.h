@@ -19,7 +19,7 @@ public:
     // mean_Le: the material's mean emitted radiance (for the power estimate), computed
     // once per material by the caller.
     TriangleLight(const Scene& scene, uint32_t instance, uint32_t mesh, uint32_t prim,
-                  Spectrum mean_Le, TriangleSampling sampling = TriangleSampling::SolidAngle);
+                  Spectrum mean_Le, TriangleSampling sampling = TriangleSampling::Area);
     // Empty when ref is behind a single-sided triangle (or in its plane).
     std::optional<LightSample> sample_Li(const ShadingPoint& ref, Vec2 u,
                                          float time) const override;

@@ -118,7 +118,7 @@ const Transform kMirroredDown =
 const Transform kMirroredUp = Transform::translate({0, kHeight, 0}) * Transform::scale({-1, 1, 1});
 
 // The light selections and triangle strategies of --light-sampler and
-// --triangle-sampling (the default, bvh and solid-angle, is tested above and below).
+// --triangle-sampling (the defaults, power and area, are tested below as well).
 TEST(SingleSidedEmitter, EveryLightSelectionGivesTheAnalyticIrradiance) {
     const double expected = kAlbedo / kPi * square_irradiance(kLe, kSide, kHeight);
     for (LightSamplerType type :

@@ -6,10 +6,15 @@ KHR_materials_emissive_strength) and slightly varied colours. No punctual lights
 environment: every pixel's light comes through next-event estimation of the triangles or
 BSDF rays hitting them, the case a light BVH exists for (issue 14, light sampling).
 
-What to expect: a softly lit room with speckled highlights of the brightest triangles on
-the floor; with --light-sampler uniform or power the floor is visibly noisier at equal spp.
+What to expect: a softly lit room; every emitter is about equally far from every point, so
+choosing by power is already close to what a light BVH does (docs/performance.md).
 
-Usage: tests/scripts/make_many_emitters.py OUT_DIR [--count N] [--seed S], then
+With --layout hall it writes many-emitters-hall.gltf instead: a hall 4 m wide and 32 m
+long whose ceiling holds the N triangles (facing down), seen along its length, where each
+point is lit mostly by the few emitters above it: the case where choosing by power wastes
+most samples on lights far away.
+
+Usage: tests/scripts/make_many_emitters.py OUT_DIR [--count N] [--seed S] [--layout hall], then
        build/bin/penumbra render OUT_DIR/many-emitters.gltf --width 256 --height 256 --spp 16
 The output is deterministic for a given count and seed.
 """
@@ -84,6 +89,41 @@ def emitters(count, rng):
     return per_level
 
 
+def hall():
+    """Floor, side walls and an end wall of a 4 x 3 x 32 m hall along -z, facing inwards."""
+    x0, x1, y1, z0, z1 = -2.0, 2.0, 3.0, -30.0, 2.0
+    quads = [
+        [(x0, 0, z0), (x0, 0, z1), (x1, 0, z1), (x1, 0, z0)],      # floor, +y
+        [(x0, 0, z0), (x0, y1, z0), (x0, y1, z1), (x0, 0, z1)],    # left wall, +x
+        [(x1, 0, z0), (x1, 0, z1), (x1, y1, z1), (x1, y1, z0)],    # right wall, -x
+        [(x0, 0, z0), (x1, 0, z0), (x1, y1, z0), (x0, y1, z0)],    # end wall, +z
+    ]
+    tris = []
+    for q in quads:
+        tris += [(q[0], q[1], q[2]), (q[0], q[2], q[3])]
+    for k in range(6):  # pillars of boxes down the hall
+        tris += box(-1.2 if k % 2 else 1.2, -3.0 - 4.5 * k, 0.25, 1.5, 0.25)
+    return tris
+
+
+def hall_emitters(count, rng):
+    """count small triangles just under the hall's ceiling, facing down."""
+    per_level = [[] for _ in range(LEVELS)]
+    for i in range(count):
+        cx, cz = rng.uniform(-1.9, 1.9), rng.uniform(-29.9, 1.9)
+        size = rng.uniform(0.02, 0.06)
+        a0 = rng.uniform(0, 2 * math.pi)
+        verts = [(cx + size * math.cos(a0 + k * 2.1), 2.95, cz + size * math.sin(a0 + k * 2.1))
+                 for k in range(3)]
+        # Front face (counter-clockwise seen from below) towards -y.
+        e1 = [verts[1][j] - verts[0][j] for j in range(3)]
+        e2 = [verts[2][j] - verts[0][j] for j in range(3)]
+        if e1[2] * e2[0] - e1[0] * e2[2] > 0:
+            verts[1], verts[2] = verts[2], verts[1]
+        per_level[rng.randrange(LEVELS)].append(tuple(verts))
+    return per_level
+
+
 def main():
     args = sys.argv[1:]
     if not args or args[0].startswith("-"):
@@ -91,6 +131,7 @@ def main():
     out_dir = args[0]
     count = int(args[args.index("--count") + 1]) if "--count" in args else 10000
     seed = int(args[args.index("--seed") + 1]) if "--seed" in args else 1
+    is_hall = "--layout" in args and args[args.index("--layout") + 1] == "hall"
     rng = random.Random(seed)
 
     blob = bytearray()
@@ -111,8 +152,8 @@ def main():
 
     materials = [{"name": "grey", "pbrMetallicRoughness": {
         "baseColorFactor": [0.7, 0.7, 0.7, 1], "metallicFactor": 0, "roughnessFactor": 1}}]
-    add_triangles(room(), 0)
-    for level, tris in enumerate(emitters(count, rng)):
+    add_triangles(hall() if is_hall else room(), 0)
+    for level, tris in enumerate((hall_emitters if is_hall else emitters)(count, rng)):
         if not tris:
             continue
         strength = 0.1 * (500 ** (level / (LEVELS - 1)))
@@ -130,7 +171,10 @@ def main():
         "scene": 0,
         "scenes": [{"nodes": [0, 1]}],
         "nodes": [{"mesh": 0},
-                  {"camera": 0, "translation": [0, 1.6, 5.2], "rotation": [-0.06, 0, 0, 0.998]}],
+                  {"camera": 0, "translation": [0, 1.5, 1.8] if is_hall else [0, 1.6, 5.2],
+                   # The hall looks down at the floor: no emitter in view, so the error
+                   # is that of the light they cast.
+                   "rotation": [-0.2588, 0, 0, 0.9659] if is_hall else [-0.06, 0, 0, 0.998]}],
         "cameras": [{"type": "perspective", "perspective": {
             "yfov": 0.75, "aspectRatio": 1.0, "znear": 0.01, "zfar": 100}}],
         "meshes": [{"name": "room-and-emitters", "primitives": meshes_prims}],
@@ -141,7 +185,7 @@ def main():
                      base64.b64encode(bytes(blob)).decode()}],
     }
     os.makedirs(out_dir, exist_ok=True)
-    path = os.path.join(out_dir, "many-emitters.gltf")
+    path = os.path.join(out_dir, "many-emitters-hall.gltf" if is_hall else "many-emitters.gltf")
     with open(path, "w") as f:
         json.dump(gltf, f)
     print("%s: %d emissive triangles in %d levels" % (path, count, len(materials) - 1))

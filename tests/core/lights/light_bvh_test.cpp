@@ -114,8 +114,8 @@ TEST(LightSet, PmfSumsToOneAndMatchesSample) {
 TEST(LightSet, BvhChoosesLightsAsOftenAsItsPmfSays) {
     Scene scene = many_triangles(200, Vec3(-2), Vec3(2), 4);
     add_punctual(scene);
-    const LightSet lights(scene, std::make_unique<EnvironmentLight>(Spectrum(0.5f), 10.0f));
-    ASSERT_EQ(lights.sampler_type(), LightSamplerType::Bvh);
+    const LightSet lights(scene, std::make_unique<EnvironmentLight>(Spectrum(0.5f), 10.0f),
+                          {LightSamplerType::Bvh, TriangleSampling::SolidAngle});
     const std::vector<ShadingPoint> refs = receivers(4, 5);
     const double level = test::sidak_significance(0.01, int(refs.size()));
     for (const ShadingPoint& ref : refs) {
@@ -147,7 +147,7 @@ TEST(LightSet, BvhIgnoresOnlyLightsThatCannotReach) {
     Scene scene = many_triangles(200, Vec3(-2, -2, -0.5f), Vec3(2, 2, 0.5f), 8, Vec3(0, 0, 1));
     // Only the single-sided materials.
     for (TriangleMesh& m : scene.meshes) m.material %= 2;
-    const LightSet lights(scene, nullptr);
+    const LightSet lights(scene, nullptr, {LightSamplerType::Bvh, TriangleSampling::SolidAngle});
     Rng rng(10);
     int zero = 0, nonzero = 0;
     for (const ShadingPoint& ref : receivers(60, 11)) {
@@ -178,7 +178,7 @@ TEST(LightSet, BvhIgnoresOnlyLightsThatCannotReach) {
                 Vec3(0, 0, 1)) < 0)
             std::swap(m.positions[1], m.positions[2]);
     }
-    const LightSet up_lights(up, nullptr);
+    const LightSet up_lights(up, nullptr, {LightSamplerType::Bvh, TriangleSampling::SolidAngle});
     EXPECT_FALSE(up_lights.sample({{0.1f, 0.2f, -1}, {0, 0, 1}}, 0.5f));
     EXPECT_TRUE(up_lights.sample({{0.1f, 0.2f, 1}, {0, 0, 1}}, 0.5f));
 }

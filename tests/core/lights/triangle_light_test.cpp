@@ -70,8 +70,9 @@ TEST(TriangleLight, SingleSidedEmitsFromItsFrontOnlyAndTwoSidedFromBoth) {
 // For refs on both sides and random points of both triangles: sample_Li, pdf_Li and
 // pdf_at are nonzero exactly where shade() finds emission towards ref at that point, and
 // that is the side `front` (the world direction of the glTF front face) points to.
-void expect_sides_agree(const Scene& scene, float time, Vec3 front, const char* what) {
-    const LightSet lights(scene, nullptr);
+void expect_sides_agree_for(const Scene& scene, float time, Vec3 front, const char* what,
+                            TriangleSampling sampling) {
+    const LightSet lights(scene, nullptr, {LightSamplerType::Power, sampling});
     ASSERT_EQ(lights.triangle_light_count(), 2u) << what;
     Rng rng(3);
     int emitting = 0, dark = 0;
@@ -111,6 +112,12 @@ void expect_sides_agree(const Scene& scene, float time, Vec3 front, const char* 
     if (!scene.materials[0].double_sided) {
         EXPECT_GT(dark, 100) << what;
     }
+}
+
+// Both strategies: area sampling and solid-angle sampling decide the side alike.
+void expect_sides_agree(const Scene& scene, float time, Vec3 front, const char* what) {
+    expect_sides_agree_for(scene, time, front, what, TriangleSampling::Area);
+    expect_sides_agree_for(scene, time, front, what, TriangleSampling::SolidAngle);
 }
 
 TEST(TriangleLight, MirroredInstancesKeepTheGltfFrontFace) {
