@@ -96,7 +96,7 @@ public:
         }
         choice("light_units", s.light_units, {"photometric", "radiometric"});
         choice("default_light", s.default_light, {"auto", "on", "off"});
-        choice("light_sampler", s.light_sampler, {"uniform", "power", "bvh"});
+        choice("light_sampler", s.light_sampler, {"uniform", "power", "bvh", "auto"});
         choice("triangle_sampling", s.triangle_sampling, {"area", "solid-angle"});
         number("exposure", s.exposure, false);
         if (s.exposure && std::abs(*s.exposure) > 64)

@@ -67,9 +67,10 @@ void add_image_options(CLI::App* cmd, RenderCommandOptions& o) {
         ->check(CLI::IsMember({"mis", "bsdf", "light"}));
     cmd->add_option("--light-sampler", o.light_sampler,
                     "How next-event estimation chooses a light: uniform, power (by emitted "
-                    "power) or bvh (a light BVH weighing distance, orientation and power)")
+                    "power), bvh (a light BVH weighing distance, orientation and power) or "
+                    "auto (bvh from 64 emitters and punctual lights on, else power)")
         ->capture_default_str()
-        ->check(CLI::IsMember({"uniform", "power", "bvh"}));
+        ->check(CLI::IsMember({"uniform", "power", "bvh", "auto"}));
     cmd->add_option("--triangle-sampling", o.triangle_sampling,
                     "Points on emissive triangles: solid-angle (spherical triangles, cosine "
                     "warped) or area (uniform by area)")

@@ -16,8 +16,9 @@ LightSamplerType parse_light_sampler(const std::string& name) {
     if (name == "uniform") return LightSamplerType::Uniform;
     if (name == "power") return LightSamplerType::Power;
     if (name == "bvh") return LightSamplerType::Bvh;
+    if (name == "auto") return LightSamplerType::Auto;
     throw std::invalid_argument("unknown light sampler '" + name +
-                                "' (expected uniform, power or bvh)");
+                                "' (expected uniform, power, bvh or auto)");
 }
 
 TriangleSampling parse_triangle_sampling(const std::string& name) {
@@ -60,6 +61,11 @@ LightSet::LightSet(const Scene& scene, std::unique_ptr<EnvironmentLight> environ
         power.push_back(m_lights[i]->power());
     }
     m_alias = AliasTable(power);
+    if (m_type == LightSamplerType::Auto) {
+        size_t bounded = 0;
+        for (const Light* l : m_lights) bounded += l->bounds().has_value();
+        m_type = bounded >= kAutoBvhLights ? LightSamplerType::Bvh : LightSamplerType::Power;
+    }
     if (m_type != LightSamplerType::Bvh) return;
 
     std::vector<std::pair<uint32_t, LightBounds>> bounded;
@@ -92,6 +98,7 @@ std::optional<SampledLight> LightSet::sample(const ShadingPoint& ref, float u) c
         case LightSamplerType::Power:
             return sample(u);
         case LightSamplerType::Bvh:
+        case LightSamplerType::Auto:  // resolved in the constructor
             break;
     }
     if (u < m_p_beside) {
@@ -114,6 +121,7 @@ float LightSet::pmf(const ShadingPoint& ref, const Light* light) const {
         case LightSamplerType::Power:
             return m_alias.empty() ? 0.0f : m_alias.pmf(it->second);
         case LightSamplerType::Bvh:
+        case LightSamplerType::Auto:  // resolved in the constructor
             break;
     }
     if (const int32_t slot = m_beside_slot[it->second]; slot >= 0)

@@ -138,7 +138,7 @@ TEST(JobFile, LightKeys) {
         {R"("exposure": "bright")", "j.json: jobs[0].exposure: expected a finite number"},
         {R"("exposure": 100)", "j.json: jobs[0].exposure: expected stops in [-64, 64]"},
         {R"("light_sampler": "tree")",
-         "j.json: jobs[0].light_sampler: 'tree' is not one of: uniform, power, bvh"},
+         "j.json: jobs[0].light_sampler: 'tree' is not one of: uniform, power, bvh, auto"},
         {R"("triangle_sampling": "sphere")",
          "j.json: jobs[0].triangle_sampling: 'sphere' is not one of: area, solid-angle"}};
     for (const auto& [member, message] : bad) {

@@ -109,6 +109,19 @@ TEST(LightSet, PmfSumsToOneAndMatchesSample) {
     }
 }
 
+// auto: the BVH from kAutoBvhLights bounded lights on (the environment does not count).
+TEST(LightSet, AutoChoosesTheBvhForManyLights) {
+    Scene few = many_triangles(int(kAutoBvhLights) - 1, Vec3(-2), Vec3(2), 1);
+    const LightSet a(few, std::make_unique<EnvironmentLight>(Spectrum(0.5f), 10.0f));
+    EXPECT_EQ(a.sampler_type(), LightSamplerType::Power);
+    Scene many = many_triangles(int(kAutoBvhLights), Vec3(-2), Vec3(2), 1);
+    const LightSet b(many, nullptr);
+    EXPECT_EQ(b.sampler_type(), LightSamplerType::Bvh);
+    EXPECT_EQ(
+        LightSet(many, nullptr, {LightSamplerType::Power, TriangleSampling::Area}).sampler_type(),
+        LightSamplerType::Power);
+}
+
 // Frequencies of every light and of "no light" (single-sided emitters facing away) against
 // the pmf and 1 - its sum.
 TEST(LightSet, BvhChoosesLightsAsOftenAsItsPmfSays) {
