@@ -34,8 +34,8 @@ LightSamplerType parse_light_sampler(const std::string& name);
 TriangleSampling parse_triangle_sampling(const std::string& name);
 
 // The defaults as measured at equal time (docs/performance.md, "Light sampling at scale"):
-// power for the Cornell box's two triangles, the BVH 4.6x better for 10,000 emitters
-// spread over a hall's ceiling (1.8x worse on a dome, where power is already right);
+// power for the Cornell box's two triangles, the BVH 4.6-7.2x better for 10,000 emitters
+// spread over a hall's ceiling (1.7-1.8x worse on a dome, where power is already right);
 // solid-angle sampling pays only for large emitters close to the receiver.
 struct LightSetOptions {
     LightSamplerType sampler = LightSamplerType::Auto;
