@@ -1,6 +1,7 @@
 // Light sampling microbenchmarks: sample_Li of each light type from a fixed receiver,
 // pdf_Li of the area and environment lights (what MIS pays on every BSDF-sampled hit),
-// and choosing a light by power with the alias table. Figures: docs/performance.md.
+// triangle lights by area and by solid angle, and choosing one of many lights uniformly,
+// by power and through the light BVH (sample and pmf). Figures: docs/performance.md.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -42,13 +43,17 @@ Image sky_image() {
 
 std::unique_ptr<Light> make_light(int which) {
     switch (which) {
-        case 0: return std::make_unique<PointLight>(Vec3(0, 0.9f, 0), Spectrum(8));
+        case 0:
+            return std::make_unique<PointLight>(Vec3(0, 0.9f, 0), Spectrum(8));
         case 1:
             return std::make_unique<SpotLight>(Vec3(0, 0.9f, 0), Vec3(0, -1, 0), Spectrum(8), 0.3f,
                                                0.6f);
-        case 2: return std::make_unique<DirectionalLight>(Vec3(0.3f, -1, 0.2f), Spectrum(2), 10);
-        case 3: return std::make_unique<EnvironmentLight>(Spectrum(1), 10.0f);
-        default: return std::make_unique<EnvironmentLight>(sky_image(), 1.0f, 0.0f, 10.0f);
+        case 2:
+            return std::make_unique<DirectionalLight>(Vec3(0.3f, -1, 0.2f), Spectrum(2), 10);
+        case 3:
+            return std::make_unique<EnvironmentLight>(Spectrum(1), 10.0f);
+        default:
+            return std::make_unique<EnvironmentLight>(sky_image(), 1.0f, 0.0f, 10.0f);
     }
 }
 const char* kNames[] = {"point", "spot", "directional", "environment-constant",
@@ -59,7 +64,8 @@ void BM_LightSampleLi(benchmark::State& state) {
     state.SetLabel(kNames[state.range(0)]);
     Rng rng(5);
     for (auto _ : state)
-        benchmark::DoNotOptimize(light->sample_Li(kReceiver, {rng.next_float(), rng.next_float()}, 0));
+        benchmark::DoNotOptimize(
+            light->sample_Li(kReceiver, {rng.next_float(), rng.next_float()}, 0));
     state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_LightSampleLi)->DenseRange(0, 4);
@@ -75,23 +81,46 @@ void BM_EnvironmentPdf(benchmark::State& state) {
 }
 BENCHMARK(BM_EnvironmentPdf);
 
-// Next-event estimation's light step in the Cornell box: pick a light by power, then a
-// point on it (an emissive triangle, sampled by area, converted to solid angle).
+const char* kTriangleNames[] = {"area", "solid-angle"};
+LightSetOptions cornell_options(int64_t triangles) {
+    return {LightSamplerType::Bvh,
+            triangles ? TriangleSampling::SolidAngle : TriangleSampling::Area};
+}
+
+// Next-event estimation's light step in the Cornell box: pick a light for the receiver,
+// then a point on it (an emissive triangle, by area or by cosine-warped solid angle).
 void BM_AreaLightNee(benchmark::State& state) {
-    static const LightSet lights(cornell_box(), nullptr);
+    const LightSet lights(cornell_box(), nullptr, cornell_options(state.range(0)));
+    state.SetLabel(kTriangleNames[state.range(0)]);
     Rng rng(7);
     for (auto _ : state) {
-        const auto chosen = lights.sample(rng.next_float());
+        const auto chosen = lights.sample(kReceiver, rng.next_float());
         benchmark::DoNotOptimize(
             chosen->light->sample_Li(kReceiver, {rng.next_float(), rng.next_float()}, 0));
     }
     state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(BM_AreaLightNee);
+BENCHMARK(BM_AreaLightNee)->DenseRange(0, 1);
 
-// MIS weight's other half: the solid-angle pdf of an area light for a direction towards it.
+// One triangle light's sample_Li alone, by area and by solid angle.
+void BM_TriangleSampleLi(benchmark::State& state) {
+    const LightSet lights(cornell_box(), nullptr, cornell_options(state.range(0)));
+    state.SetLabel(kTriangleNames[state.range(0)]);
+    const Light* light = lights.lights().front();
+    Rng rng(7);
+    for (auto _ : state)
+        benchmark::DoNotOptimize(
+            light->sample_Li(kReceiver, {rng.next_float(), rng.next_float()}, 0));
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_TriangleSampleLi)->DenseRange(0, 1);
+
+// MIS weight's other half: the solid-angle pdf of an area light for a direction towards
+// it (the sample_Li that finds the direction is timed with it; subtract
+// BM_TriangleSampleLi for pdf_Li alone).
 void BM_AreaLightPdf(benchmark::State& state) {
-    static const LightSet lights(cornell_box(), nullptr);
+    const LightSet lights(cornell_box(), nullptr, cornell_options(state.range(0)));
+    state.SetLabel(kTriangleNames[state.range(0)]);
     const Light* light = lights.lights().front();
     Rng rng(8);
     for (auto _ : state) {
@@ -100,16 +129,84 @@ void BM_AreaLightPdf(benchmark::State& state) {
     }
     state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(BM_AreaLightPdf);
+BENCHMARK(BM_AreaLightPdf)->DenseRange(0, 1);
 
-// Choosing one of many lights by power: the alias table is O(1) whatever the count.
+// 10,000 small emissive triangles of varied emission on a dome, as
+// tests/scripts/make_many_emitters.py writes them, built in code.
+const Scene& many_emitters() {
+    static const Scene scene = [] {
+        Scene s;
+        for (int k = 0; k < 32; ++k) {
+            MaterialDesc m;
+            m.emissive = Spectrum(0.1f * std::pow(500.0f, k / 31.0f));
+            s.materials.push_back(m);
+        }
+        Rng rng(3);
+        for (int i = 0; i < 10000; ++i) {
+            const float z = 0.15f + 0.85f * rng.next_float(), phi = 2 * kPi * rng.next_float();
+            const float r = std::sqrt(1 - z * z);
+            const Vec3 d(r * std::cos(phi), z, r * std::sin(phi));
+            const Vec3 p = Vec3(0, 1, 0) + d * 3.0f;
+            const Vec3 t =
+                normalize(cross(d, std::abs(d.x) < 0.9f ? Vec3(1, 0, 0) : Vec3(0, 0, 1)));
+            const Vec3 b = cross(d, t);
+            TriangleMesh mesh;
+            // Clockwise seen from outside: the front faces the dome's centre.
+            mesh.positions = {p + t * 0.05f, p - t * 0.025f - b * 0.04f,
+                              p - t * 0.025f + b * 0.04f};
+            mesh.normals = {-d, -d, -d};
+            mesh.indices = {0, 1, 2};
+            mesh.material = int(rng.next_below(32));
+            mesh.bounds.expand(mesh.positions[0]);
+            s.meshes.push_back(mesh);
+            Object obj;
+            obj.meshes = {uint32_t(s.meshes.size() - 1)};
+            s.objects.push_back(obj);
+            Instance inst;
+            inst.object = uint32_t(s.objects.size() - 1);
+            s.instances.push_back(inst);
+        }
+        return s;
+    }();
+    return scene;
+}
+const char* kSamplerNames[] = {"uniform", "power", "bvh"};
+const ShadingPoint kRoomReceiver{{0.3f, 0, -0.2f}, {0, 1, 0}};
+
+// Choosing one of 10,000 lights for a receiver: O(1) uniformly or by power (alias
+// table), O(depth) through the BVH.
 void BM_LightSetChoose(benchmark::State& state) {
-    static const LightSet lights(cornell_box(), nullptr);
+    const LightSet lights(many_emitters(), nullptr,
+                          {LightSamplerType(state.range(0)), TriangleSampling::SolidAngle});
+    state.SetLabel(kSamplerNames[state.range(0)]);
     Rng rng(9);
-    for (auto _ : state) benchmark::DoNotOptimize(lights.sample(rng.next_float()));
+    for (auto _ : state) benchmark::DoNotOptimize(lights.sample(kRoomReceiver, rng.next_float()));
     state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(BM_LightSetChoose);
+BENCHMARK(BM_LightSetChoose)->DenseRange(0, 2);
+
+// The pmf of a light for MIS, as a BSDF-sampled hit on an emitter asks for it.
+void BM_LightSetPmf(benchmark::State& state) {
+    const LightSet lights(many_emitters(), nullptr,
+                          {LightSamplerType(state.range(0)), TriangleSampling::SolidAngle});
+    state.SetLabel(kSamplerNames[state.range(0)]);
+    Rng rng(10);
+    const auto& all = lights.lights();
+    for (auto _ : state)
+        benchmark::DoNotOptimize(
+            lights.pmf(kRoomReceiver, all[rng.next_below(uint32_t(all.size()))]));
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_LightSetPmf)->DenseRange(0, 2);
+
+// Building the light BVH over 10,000 triangles (once per render).
+void BM_LightBvhBuild(benchmark::State& state) {
+    for (auto _ : state) {
+        const LightSet lights(many_emitters(), nullptr);
+        benchmark::DoNotOptimize(&lights);
+    }
+}
+BENCHMARK(BM_LightBvhBuild)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace penumbra

@@ -74,7 +74,7 @@ Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
                           const SideMedia& media) {
     const float u_light = sampler.get_1d();
     const Vec2 u = sampler.get_2d();
-    const std::optional<SampledLight> chosen = ctx.lights.sample(u_light);
+    const std::optional<SampledLight> chosen = ctx.lights.sample(ShadingPoint{sp.p, sd.ng}, u_light);
     if (!chosen) return Spectrum(0);
     return sample_chosen_light(ctx, sp, sd, wo, time, sampler, &*chosen, u, strategy,
                                light_samples, bsdf_samples, media);
@@ -85,7 +85,8 @@ Spectrum sample_light_stratified(const RenderContext& ctx, const SurfacePoint& s
                                  int n, LightStrategy strategy, float bsdf_samples,
                                  const SideMedia& media) {
     if (n <= 0) return Spectrum(0);
-    const std::optional<SampledLight> chosen = ctx.lights.sample(sampler.get_1d());
+    const std::optional<SampledLight> chosen =
+        ctx.lights.sample(ShadingPoint{sp.p, sd.ng}, sampler.get_1d());
     // Latin hypercube over the light's sample square: sample i takes column i and row
     // perm[i], jittered inside, so the n points cover the light evenly in both
     // directions while each, alone, is uniform (the estimator stays unbiased and its MIS
@@ -117,12 +118,15 @@ float emission_weight(const RenderContext& ctx, const Light* light, Vec3 prev_p,
     if (strategy == LightStrategy::BsdfOnly) return 1;
     if (strategy == LightStrategy::LightOnly) return 0;
     if (!light) return 1;  // emitter the light set does not sample
+    // The same receiver as the light sample at prev_p had: the BVH's choice and the
+    // cosine warp of spherical triangles both depend on its normal.
+    const ShadingPoint ref{prev_p, prev_n};
     float light_pdf;
     if (hit_p)
-        light_pdf = static_cast<const TriangleLight*>(light)->pdf_at(prev_p, *hit_p, time);
+        light_pdf = static_cast<const TriangleLight*>(light)->pdf_at(ref, *hit_p, time);
     else
-        light_pdf = light->pdf_Li(ShadingPoint{prev_p, prev_n}, wi, time);
-    light_pdf *= ctx.lights.pmf(light);
+        light_pdf = light->pdf_Li(ref, wi, time);
+    light_pdf *= ctx.lights.pmf(ref, light);
     return power_heuristic(bsdf_samples, bsdf_pdf, light_samples, light_pdf);
 }
 

@@ -53,7 +53,7 @@ Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
                           LightStrategy strategy, float light_samples = 1,
                           float bsdf_samples = 1, const SideMedia& media = {});
 
-// Distribution ray tracing's soft shadows: one light chosen by power, then n shadow rays
+// Distribution ray tracing's soft shadows: one light chosen for the point, then n shadow rays
 // to n different points of it, stratified over the light (a Latin hypercube of its
 // sample square). Returns the average of the n estimates, each MIS-weighted against
 // `bsdf_samples` BSDF samples per n light samples.

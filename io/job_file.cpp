@@ -33,7 +33,7 @@ public:
             "output_colorspace", "display", "view", "look", "aov", "half", "compression",
             "light_units", "default_light", "exposure", "strict", "max_texture_pixels",
             "target_error", "adaptive_min_spp", "clamp_direct", "clamp_indirect", "regularize",
-            "bands", "frames_per_task"};
+            "bands", "frames_per_task", "light_sampler", "triangle_sampling"};
         for (const auto& [key, value] : m_object.items()) {
             bool known = false;
             for (const char* k : kKeys) known = known || key == k;
@@ -99,6 +99,8 @@ public:
         }
         choice("light_units", s.light_units, {"photometric", "radiometric"});
         choice("default_light", s.default_light, {"auto", "on", "off"});
+        choice("light_sampler", s.light_sampler, {"uniform", "power", "bvh", "auto"});
+        choice("triangle_sampling", s.triangle_sampling, {"area", "solid-angle"});
         number("exposure", s.exposure, false);
         if (s.exposure && std::abs(*s.exposure) > 64)
             fail("exposure", "expected stops in [-64, 64]");

@@ -28,6 +28,8 @@ void apply(const JobSettings& s, RenderCommandOptions& o) {
     if (s.variant) o.variant = *s.variant;
     if (s.integrator) o.integrator = *s.integrator;
     if (s.strategy) o.strategy = *s.strategy;
+    if (s.light_sampler) o.light_sampler = *s.light_sampler;
+    if (s.triangle_sampling) o.triangle_sampling = *s.triangle_sampling;
     if (s.sampler) o.sampler = *s.sampler;
     if (s.filter) o.filter = *s.filter;
     if (s.accel) o.accel = *s.accel;

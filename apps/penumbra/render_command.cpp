@@ -195,6 +195,8 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
         {"penumbra:scene", path},
         {"penumbra:integrator", o.integrator},
         {"penumbra:strategy", o.strategy},
+        {"penumbra:light_sampler", o.light_sampler},
+        {"penumbra:triangle_sampling", o.triangle_sampling},
         {"penumbra:microfacet", o.microfacet},
         {"penumbra:gltf_layering", o.gltf_layering},
         {"penumbra:max_depth", std::to_string(o.max_depth)},

@@ -34,6 +34,8 @@ struct RenderCommandOptions {
     std::string variant;  // KHR_materials_variants name; empty: default materials
     std::string integrator = "path";
     std::string strategy = "mis";
+    std::string light_sampler = "auto";      // uniform | power | bvh | auto
+    std::string triangle_sampling = "area";  // area | solid-angle
     std::string microfacet = "ggx";  // glTF specular lobes: ggx | beckmann
     std::string gltf_layering = "albedo-scaled";  // glTF diffuse base: albedo-scaled | spec
     int light_samples = 1, bsdf_samples = 1;

@@ -71,6 +71,17 @@ void add_image_options(CLI::App* cmd, RenderCommandOptions& o) {
                     "bsdf (BSDF sampling only) or light (light sampling only)")
         ->capture_default_str()
         ->check(CLI::IsMember({"mis", "bsdf", "light"}));
+    cmd->add_option("--light-sampler", o.light_sampler,
+                    "How next-event estimation chooses a light: uniform, power (by emitted "
+                    "power), bvh (a light BVH weighing distance, orientation and power) or "
+                    "auto (bvh from 64 emitters and punctual lights on, else power)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"uniform", "power", "bvh", "auto"}));
+    cmd->add_option("--triangle-sampling", o.triangle_sampling,
+                    "Points on emissive triangles: solid-angle (spherical triangles, cosine "
+                    "warped) or area (uniform by area)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"area", "solid-angle"}));
     cmd->add_option("--microfacet", o.microfacet,
                     "Microfacet distribution of glTF materials: ggx (the spec's) or beckmann")
         ->capture_default_str()
@@ -288,7 +299,14 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
         std::unique_ptr<EnvironmentLight> dim = add_default_lights(scene, s->camera_desc);
         if (!env) env = std::move(dim);
     }
-    s->lights = std::make_unique<LightSet>(scene, std::move(env));
+    LightSetOptions light_options;
+    try {
+        light_options.sampler = parse_light_sampler(o.light_sampler);
+        light_options.triangles = parse_triangle_sampling(o.triangle_sampling);
+    } catch (const std::invalid_argument& e) {
+        throw SceneError(path + ": " + e.what());
+    }
+    s->lights = std::make_unique<LightSet>(scene, std::move(env), light_options);
 
     t0 = Clock::now();
     const std::clock_t build_cpu = std::clock();

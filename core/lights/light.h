@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "core/lights/light_bounds.h"
 #include "core/math/vec.h"
 
 namespace penumbra {
@@ -37,6 +38,9 @@ public:
     // Total emitted power, for choosing among lights.
     virtual float power() const = 0;
     virtual bool is_delta() const = 0;
+    // Where the light is and which way it emits, for a light BVH; empty for lights at
+    // infinity and for emitters that move within the shutter (sampled beside the tree).
+    virtual std::optional<LightBounds> bounds() const { return std::nullopt; }
     virtual std::string describe() const = 0;
 };
 

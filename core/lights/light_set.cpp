@@ -1,15 +1,36 @@
 #include "core/lights/light_set.h"
 
+#include <algorithm>
+#include <stdexcept>
+
 #include "core/scene/emission.h"
 
 namespace penumbra {
 
 namespace {
 uint64_t key(uint32_t instance, uint32_t mesh) { return (uint64_t(instance) << 32) | mesh; }
+constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 }  // namespace
 
-LightSet::LightSet(const Scene& scene, std::unique_ptr<EnvironmentLight> environment)
-    : m_environment(std::move(environment)) {
+LightSamplerType parse_light_sampler(const std::string& name) {
+    if (name == "uniform") return LightSamplerType::Uniform;
+    if (name == "power") return LightSamplerType::Power;
+    if (name == "bvh") return LightSamplerType::Bvh;
+    if (name == "auto") return LightSamplerType::Auto;
+    throw std::invalid_argument("unknown light sampler '" + name +
+                                "' (expected uniform, power, bvh or auto)");
+}
+
+TriangleSampling parse_triangle_sampling(const std::string& name) {
+    if (name == "area") return TriangleSampling::Area;
+    if (name == "solid-angle") return TriangleSampling::SolidAngle;
+    throw std::invalid_argument("unknown triangle sampling '" + name +
+                                "' (expected area or solid-angle)");
+}
+
+LightSet::LightSet(const Scene& scene, std::unique_ptr<EnvironmentLight> environment,
+                   const LightSetOptions& options)
+    : m_environment(std::move(environment)), m_type(options.sampler) {
     // Mean emission per material, computed once (textures can be large).
     std::vector<std::optional<Spectrum>> mean_Le(scene.materials.size() + 1);
     for (uint32_t ii = 0; ii < scene.instances.size(); ++ii) {
@@ -25,7 +46,8 @@ LightSet::LightSet(const Scene& scene, std::unique_ptr<EnvironmentLight> environ
                 mean = mat.emissive * mat.emissive_strength * mean_emission_texture(scene, mat);
             m_first_triangle[key(ii, mi)] = static_cast<uint32_t>(m_triangles.size());
             for (uint32_t p = 0; p < mesh.triangle_count(); ++p)
-                m_triangles.push_back(std::make_unique<TriangleLight>(scene, ii, mi, p, *mean));
+                m_triangles.push_back(
+                    std::make_unique<TriangleLight>(scene, ii, mi, p, *mean, options.triangles));
         }
     }
     for (const auto& l : scene.lights) m_lights.push_back(l.get());
@@ -39,6 +61,72 @@ LightSet::LightSet(const Scene& scene, std::unique_ptr<EnvironmentLight> environ
         power.push_back(m_lights[i]->power());
     }
     m_alias = AliasTable(power);
+    if (m_type == LightSamplerType::Auto) {
+        size_t bounded = 0;
+        for (const Light* l : m_lights) bounded += l->bounds().has_value();
+        m_type = bounded >= kAutoBvhLights ? LightSamplerType::Bvh : LightSamplerType::Power;
+    }
+    if (m_type != LightSamplerType::Bvh) return;
+
+    std::vector<std::pair<uint32_t, LightBounds>> bounded;
+    std::vector<float> beside_power;
+    m_beside_slot.assign(m_lights.size(), -1);
+    for (uint32_t i = 0; i < m_lights.size(); ++i) {
+        if (const std::optional<LightBounds> b = m_lights[i]->bounds()) {
+            bounded.emplace_back(i, *b);  // zero power: left out by the tree, never chosen
+        } else {
+            m_beside_slot[i] = static_cast<int32_t>(m_beside.size());
+            m_beside.push_back(i);
+            beside_power.push_back(power[i]);
+        }
+    }
+    m_bvh = LightBvh(std::move(bounded));
+    m_beside_alias = AliasTable(beside_power);
+    // As pbrt-v4 gives its infinite lights a fixed share: half when there is a tree too.
+    // A fixed probability keeps the choice independent of the receiver's position.
+    m_p_beside = m_beside_alias.empty() ? 0.0f : m_bvh.empty() ? 1.0f : 0.5f;
+}
+
+std::optional<SampledLight> LightSet::sample(const ShadingPoint& ref, float u) const {
+    switch (m_type) {
+        case LightSamplerType::Uniform: {
+            if (m_lights.empty()) return std::nullopt;
+            const size_t n = m_lights.size();
+            const size_t i = std::min(size_t(u * n), n - 1);
+            return SampledLight{m_lights[i], 1.0f / n};
+        }
+        case LightSamplerType::Power:
+            return sample(u);
+        case LightSamplerType::Bvh:
+        case LightSamplerType::Auto:  // resolved in the constructor
+            break;
+    }
+    if (u < m_p_beside) {
+        float pmf;
+        const uint32_t k = m_beside_alias.sample(std::min(u / m_p_beside, kOneMinusEpsilon), &pmf);
+        return SampledLight{m_lights[m_beside[k]], m_p_beside * pmf};
+    }
+    const float u_tree = std::min((u - m_p_beside) / (1 - m_p_beside), kOneMinusEpsilon);
+    const auto chosen = m_bvh.sample(ref.p, ref.n, u_tree);
+    if (!chosen) return std::nullopt;
+    return SampledLight{m_lights[chosen->first], (1 - m_p_beside) * chosen->second};
+}
+
+float LightSet::pmf(const ShadingPoint& ref, const Light* light) const {
+    const auto it = m_index.find(light);
+    if (it == m_index.end()) return 0;
+    switch (m_type) {
+        case LightSamplerType::Uniform:
+            return 1.0f / m_lights.size();
+        case LightSamplerType::Power:
+            return m_alias.empty() ? 0.0f : m_alias.pmf(it->second);
+        case LightSamplerType::Bvh:
+        case LightSamplerType::Auto:  // resolved in the constructor
+            break;
+    }
+    if (const int32_t slot = m_beside_slot[it->second]; slot >= 0)
+        return m_beside_alias.empty() ? 0.0f : m_p_beside * m_beside_alias.pmf(uint32_t(slot));
+    return (1 - m_p_beside) * m_bvh.pmf(ref.p, ref.n, it->second);
 }
 
 std::optional<SampledLight> LightSet::sample(float u) const {

@@ -14,6 +14,14 @@ public:
     float pdf_Li(const ShadingPoint&, Vec3, float) const override { return 0; }
     float power() const override { return 4 * kPi * luminance(m_I); }
     bool is_delta() const override { return true; }
+    // A point emitting over the whole sphere.
+    std::optional<LightBounds> bounds() const override {
+        LightBounds b;
+        b.lo = b.hi = m_p;
+        b.phi = power();
+        b.cos_theta_o = -1;
+        return b;
+    }
     std::string describe() const override { return "point"; }
 
 private:

@@ -36,4 +36,19 @@ float SpotLight::power() const {
     return luminance(m_I) * 2 * kPi * (1 - m_cos_outer);
 }
 
+std::optional<LightBounds> SpotLight::bounds() const {
+    LightBounds b;
+    b.lo = b.hi = m_p;
+    // Weighed like a point light of the same intensity, so the tree compares the light
+    // arriving at a receiver inside the cone (pbrt-v4 does the same).
+    b.phi = 4 * kPi * luminance(m_I);
+    b.w = m_axis;
+    // The outer cone, widened by 1e-3 rad so rounding at its edge never zeroes a
+    // receiver the falloff still reaches; no spread beyond it (theta_e = 0).
+    b.cos_theta_o =
+        std::cos(std::min(std::acos(std::clamp(m_cos_outer, -1.0f, 1.0f)) + 1e-3f, kPi));
+    b.cos_theta_e = 1;
+    return b;
+}
+
 }  // namespace penumbra

@@ -16,6 +16,8 @@ public:
     float pdf_Li(const ShadingPoint&, Vec3, float) const override { return 0; }
     float power() const override;
     bool is_delta() const override { return true; }
+    // A point emitting inside its outer cone.
+    std::optional<LightBounds> bounds() const override;
     std::string describe() const override { return "spot"; }
     // The spec's angular attenuation for a direction from the light with
     // cos(angle to axis) = cos_theta, in [0, 1].

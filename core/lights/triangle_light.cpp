@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/lights/spherical_triangle.h"
 #include "core/sampling/warp.h"
 #include "core/scene/emission.h"
 #include "core/scene/motion.h"
@@ -9,8 +10,12 @@
 namespace penumbra {
 
 TriangleLight::TriangleLight(const Scene& scene, uint32_t instance, uint32_t mesh_index,
-                             uint32_t prim, Spectrum mean_Le)
-    : m_scene(&scene), m_instance(instance), m_mesh(mesh_index), m_prim(prim) {
+                             uint32_t prim, Spectrum mean_Le, TriangleSampling sampling)
+    : m_scene(&scene),
+      m_instance(instance),
+      m_mesh(mesh_index),
+      m_prim(prim),
+      m_sampling(sampling) {
     const TriangleMesh& mesh = scene.meshes[mesh_index];
     const Instance& inst = scene.instances[instance];
     m_moving = !inst.motion.empty() || !mesh.motion_positions.empty();
@@ -65,26 +70,77 @@ float TriangleLight::solid_angle_pdf(Vec3 ref, Vec3 p, const Placed& t) const {
     return dist2 / (cos_light * t.area);
 }
 
-float TriangleLight::pdf_at(Vec3 ref, Vec3 p, float time) const {
-    return solid_angle_pdf(ref, p, placed(time));
+namespace {
+// pbrt-v4's limits (Triangle::MinSphericalSampleArea, MaxSphericalSampleArea): below,
+// Arvo's trigonometry loses the triangle's shape to float rounding, where area sampling
+// is already nearly uniform in solid angle; near 2 pi the triangle almost fills the
+// hemisphere and its edges' great circles become ill-conditioned.
+constexpr float kMinSphericalArea = 3e-4f, kMaxSphericalArea = 6.22f;
+
+bool has_normal(const ShadingPoint& ref) { return ref.n.x != 0 || ref.n.y != 0 || ref.n.z != 0; }
+}  // namespace
+
+float TriangleLight::spherical_solid_angle(Vec3 ref, const Placed& t) const {
+    if (m_sampling != TriangleSampling::SolidAngle) return 0;
+    const float omega = triangle_solid_angle(t.p, ref);
+    return omega >= kMinSphericalArea && omega <= kMaxSphericalArea ? omega : 0.0f;
+}
+
+float TriangleLight::density(const ShadingPoint& ref, Vec3 p, const Placed& t) const {
+    const float omega = spherical_solid_angle(ref.p, t);
+    if (!(omega > 0)) return solid_angle_pdf(ref.p, p, t);
+    const Vec3 d = p - ref.p;
+    if (!emits_towards(m_scene->material(m_material), t.n, -d)) return 0;
+    float pdf = 1 / omega;
+    if (has_normal(ref)) {
+        // The warp's density at the square point that maps to this direction.
+        float w[4];
+        receiver_cosine_weights(t.p, ref.p, ref.n, w);
+        pdf *= bilinear_pdf(invert_spherical_triangle_sample(t.p, ref.p, normalize(d)), w);
+    }
+    return pdf;
+}
+
+float TriangleLight::pdf_at(const ShadingPoint& ref, Vec3 p, float time) const {
+    return density(ref, p, placed(time));
 }
 
 std::optional<LightSample> TriangleLight::sample_Li(const ShadingPoint& ref, Vec2 u,
                                                     float time) const {
     const Placed t = placed(time);
     if (!(t.area > 0)) return std::nullopt;
-    const Vec2 b = square_to_triangle(u);
-    const float b0 = 1 - b.x - b.y;
-    const Vec3 p = t.p[0] * b0 + t.p[1] * b.x + t.p[2] * b.y;
+    float b0, b1, b2, pdf;
+    Vec3 p;
+    if (const float omega = spherical_solid_angle(ref.p, t); omega > 0) {
+        // A planar triangle emits towards ref from all its points or from none.
+        if (!emits_towards(m_scene->material(m_material), t.n, ref.p - t.p[0])) return std::nullopt;
+        pdf = 1 / omega;
+        if (has_normal(ref)) {
+            // Warp product sampling (pbrt-v4, 6.5.4): the square first goes through a
+            // bilinear density that follows |cos| at the receiver towards each vertex.
+            float w[4];
+            receiver_cosine_weights(t.p, ref.p, ref.n, w);
+            u = sample_bilinear(u, w);
+            pdf *= bilinear_pdf(u, w);
+        }
+        const std::optional<Vec3> b = sample_spherical_triangle(t.p, ref.p, u);
+        if (!b) return std::nullopt;
+        b0 = b->x, b1 = b->y, b2 = b->z;
+        p = t.p[0] * b0 + t.p[1] * b1 + t.p[2] * b2;
+    } else {
+        const Vec2 b = square_to_triangle(u);
+        b0 = 1 - b.x - b.y, b1 = b.x, b2 = b.y;
+        p = t.p[0] * b0 + t.p[1] * b1 + t.p[2] * b2;
+        pdf = solid_angle_pdf(ref.p, p, t);
+    }
     const Vec3 d = p - ref.p;
     const float dist2 = length_squared(d);
     if (!(dist2 > 0)) return std::nullopt;
     const float dist = std::sqrt(dist2);
     const Vec3 wi = d / dist;
-    const float pdf = solid_angle_pdf(ref.p, p, t);
     if (!(pdf > 0) || !std::isfinite(pdf)) return std::nullopt;
-    const Vec2 uv0 = m_uv0[0] * b0 + m_uv0[1] * b.x + m_uv0[2] * b.y;
-    const Vec2 uv1 = m_uv1[0] * b0 + m_uv1[1] * b.x + m_uv1[2] * b.y;
+    const Vec2 uv0 = m_uv0[0] * b0 + m_uv0[1] * b1 + m_uv0[2] * b2;
+    const Vec2 uv1 = m_uv1[0] * b0 + m_uv1[1] * b1 + m_uv1[2] * b2;
     const Spectrum Le = emitted_radiance(*m_scene, m_scene->material(m_material), uv0, uv1);
     if (is_black(Le)) return std::nullopt;
     return LightSample{Le, wi, dist, pdf, false};
@@ -105,9 +161,22 @@ float TriangleLight::pdf_Li(const ShadingPoint& ref, Vec3 wi, float time) const 
     if (b2 < 0 || b1 + b2 > 1) return 0;
     const float t = dot(e2, qv) / det;
     if (!(t > 0)) return 0;
-    return solid_angle_pdf(ref.p, ref.p + wi * t, tri);
+    return density(ref, ref.p + wi * t, tri);
 }
 
 float TriangleLight::power() const { return m_power; }
+
+std::optional<LightBounds> TriangleLight::bounds() const {
+    if (m_moving || !(m_power > 0)) return std::nullopt;
+    LightBounds b;
+    b.lo = min(m_static.p[0], min(m_static.p[1], m_static.p[2]));
+    b.hi = max(m_static.p[0], max(m_static.p[1], m_static.p[2]));
+    b.phi = m_power;
+    b.w = m_static.n;
+    b.cos_theta_o = 1;
+    b.cos_theta_e = 0;  // Lambertian: emission spreads pi/2 about the normal
+    b.two_sided = m_two_sided;
+    return b;
+}
 
 }  // namespace penumbra

@@ -1,6 +1,7 @@
-// An emissive triangle of one instance, in world space: an area light. Sampled
-// uniformly by area and converted to solid angle at the receiver. Emits from its glTF
-// front face only, or from both when the material is doubleSided (emits_towards).
+// An emissive triangle of one instance, in world space: an area light. Sampled uniformly
+// in the solid angle it subtends, warped by the receiver's cosine (spherical_triangle.h),
+// or uniformly by area. Emits from its glTF front face only, or from both when the
+// material is doubleSided (emits_towards).
 #pragma once
 
 #include "core/lights/light.h"
@@ -8,12 +9,17 @@
 
 namespace penumbra {
 
+// How sample_Li picks points. SolidAngle falls back to Area where the solid angle is too
+// small for float precision or nearly a hemisphere (pbrt-v4's MinSphericalSampleArea and
+// MaxSphericalSampleArea), decided from the receiver alone so pdf_Li decides the same.
+enum class TriangleSampling { Area, SolidAngle };
+
 class TriangleLight final : public Light {
 public:
     // mean_Le: the material's mean emitted radiance (for the power estimate), computed
     // once per material by the caller.
     TriangleLight(const Scene& scene, uint32_t instance, uint32_t mesh, uint32_t prim,
-                  Spectrum mean_Le);
+                  Spectrum mean_Le, TriangleSampling sampling = TriangleSampling::Area);
     // Empty when ref is behind a single-sided triangle (or in its plane).
     std::optional<LightSample> sample_Li(const ShadingPoint& ref, Vec2 u,
                                          float time) const override;
@@ -22,11 +28,14 @@ public:
     float pdf_Li(const ShadingPoint& ref, Vec3 wi, float time) const override;
     // Solid-angle density of sampling point p of the triangle (where it is at time)
     // from ref; 0 when ref is behind a single-sided triangle.
-    float pdf_at(Vec3 ref, Vec3 p, float time) const;
+    float pdf_at(const ShadingPoint& ref, Vec3 p, float time) const;
     // pi A luminance(Le) per emitting side, at shutter open.
     float power() const override;
     bool two_sided() const { return m_two_sided; }
     bool is_delta() const override { return false; }
+    // Empty for a triangle that moves within the shutter.
+    std::optional<LightBounds> bounds() const override;
+    TriangleSampling sampling() const { return m_sampling; }
     std::string describe() const override { return "triangle"; }
     float area() const { return m_area; }  // at shutter open
 
@@ -46,11 +55,16 @@ private:
     // Solid-angle density of area sampling at ref for point p of t; 0 from behind a
     // single-sided triangle.
     float solid_angle_pdf(Vec3 ref, Vec3 p, const Placed& t) const;
+    // The solid angle of t at ref when sample_Li samples it spherically there, else 0.
+    float spherical_solid_angle(Vec3 ref, const Placed& t) const;
+    // The density of sample_Li choosing point p of t from ref (either strategy).
+    float density(const ShadingPoint& ref, Vec3 p, const Placed& t) const;
 
     const Scene* m_scene;
     uint32_t m_instance, m_mesh, m_prim;
     bool m_moving;
     bool m_two_sided;
+    TriangleSampling m_sampling;
     int m_material;
     Placed m_static;  // at shutter open
     Vec2 m_uv0[3], m_uv1[3];

@@ -39,7 +39,7 @@ struct Residuals {
     double variance = 0;  // of that, over the pixels
 };
 
-Residuals render_residuals(int light_samples) {
+Residuals render_residuals(int light_samples, const LightSetOptions& light_options) {
     Scene scene;
     const int floor = test::add_lambertian(scene, Spectrum(0.8f));
     const int emitter = test::add_lambertian(scene, Spectrum(0.0f));
@@ -54,7 +54,7 @@ Residuals render_residuals(int light_samples) {
                                              {-h, kH, h}, emitter),
                        Transform());
     const EmbreeAccel accel(scene);
-    const LightSet lights(scene, nullptr);
+    const LightSet lights(scene, nullptr, light_options);
     const RenderContext ctx{scene, accel, lights};
     const OrthographicCamera camera(Transform::look_at({0, 0.5f, 0}, {0, 0, 0}, {0, 0, -1}),
                                     kHalf, kHalf, kRes, kRes);
@@ -85,10 +85,14 @@ Residuals render_residuals(int light_samples) {
     return res;
 }
 
+// By area, where the variance within the chosen triangle dominates (solid-angle sampling
+// leaves mostly the choice between the quad's two triangles, which stratification over
+// one light cannot reduce).
 TEST(LightSamples, StratifiedOverTheLightAndUnbiased) {
-    const Residuals one = render_residuals(1);
-    const Residuals sixteen = render_residuals(16);
-    const Residuals many = render_residuals(64);
+    const LightSetOptions area{LightSamplerType::Power, TriangleSampling::Area};
+    const Residuals one = render_residuals(1, area);
+    const Residuals sixteen = render_residuals(16, area);
+    const Residuals many = render_residuals(64, area);
     for (const auto& [n, r] : {std::pair{1, one}, {16, sixteen}, {64, many}})
         EXPECT_NEAR(r.mean, 0.0, 4 * std::sqrt(r.variance / (kRes * kRes)) + 1e-3)
             << n << " light samples";
@@ -97,6 +101,21 @@ TEST(LightSamples, StratifiedOverTheLightAndUnbiased) {
     EXPECT_LT(sixteen.variance, 0.5 * one.variance / 16)
         << "1 sample: " << one.variance << ", 16: " << sixteen.variance;
     EXPECT_LT(many.variance, sixteen.variance);
+}
+
+// The light BVH and cosine-warped spherical triangles: unbiased for any N, and one
+// sample already has far less variance than one by area.
+TEST(LightSamples, SolidAngleSamplingIsUnbiasedAndBeatsArea) {
+    const Residuals area = render_residuals(1, {LightSamplerType::Power, TriangleSampling::Area});
+    for (int n : {1, 16}) {
+        const Residuals r =
+            render_residuals(n, {LightSamplerType::Bvh, TriangleSampling::SolidAngle});
+        EXPECT_NEAR(r.mean, 0.0, 4 * std::sqrt(r.variance / (kRes * kRes)) + 1e-3)
+            << n << " light samples";
+        if (n == 1) {
+            EXPECT_LT(r.variance, 0.25 * area.variance) << r.variance << " vs " << area.variance;
+        }
+    }
 }
 
 }  // namespace

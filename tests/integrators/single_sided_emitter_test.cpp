@@ -35,7 +35,8 @@ struct Setup {
 
 // The floor y = 0 (facing up) and the emitter, the square [-s/2, s/2]^2 in x and z,
 // object-space front +Y (counter-clockwise from above), placed by `xf`.
-std::unique_ptr<Setup> floor_and_emitter(bool double_sided, const Transform& xf) {
+std::unique_ptr<Setup> floor_and_emitter(bool double_sided, const Transform& xf,
+                                         const LightSetOptions& lights = {}) {
     auto s = std::make_unique<Setup>();
     const int floor = test::add_lambertian(s->scene, Spectrum(kAlbedo));
     const int emitter = test::add_lambertian(s->scene, Spectrum(0));
@@ -51,7 +52,7 @@ std::unique_ptr<Setup> floor_and_emitter(bool double_sided, const Transform& xf)
         test::add_quad_object(s->scene, {-h, 0, -h}, {-h, 0, h}, {h, 0, h}, {h, 0, -h}, emitter),
         xf);
     s->accel = std::make_unique<EmbreeAccel>(s->scene);
-    s->lights = std::make_unique<LightSet>(s->scene, nullptr);
+    s->lights = std::make_unique<LightSet>(s->scene, nullptr, lights);
     return s;
 }
 
@@ -115,6 +116,26 @@ const Transform kMirroredDown =
     Transform::translate({0, kHeight, 0}) * Transform::scale({1, -1, 1});
 // Mirrored within its plane: the world winding faces down, glTF's front face up.
 const Transform kMirroredUp = Transform::translate({0, kHeight, 0}) * Transform::scale({-1, 1, 1});
+
+// The light selections and triangle strategies of --light-sampler and
+// --triangle-sampling (the defaults, power and area, are tested below as well).
+TEST(SingleSidedEmitter, EveryLightSelectionGivesTheAnalyticIrradiance) {
+    const double expected = kAlbedo / kPi * square_irradiance(kLe, kSide, kHeight);
+    for (LightSamplerType type :
+         {LightSamplerType::Uniform, LightSamplerType::Power, LightSamplerType::Bvh})
+        for (TriangleSampling ts : {TriangleSampling::Area, TriangleSampling::SolidAngle}) {
+            const auto s = floor_and_emitter(false, kFacingDown, {type, ts});
+            for (const Config& c : configs()) {
+                if (c.name != std::string("path mis") && c.name != std::string("path light"))
+                    continue;
+                const test::Estimate e = floor_radiance(*s, c, 60000);
+                EXPECT_TRUE(test::within(e, expected))
+                    << int(type) << " " << int(ts) << ", " << c.name << ": " << e.mean
+                    << " +- " << e.std_error << ", expected " << expected;
+                EXPECT_LT(e.std_error, 0.01 * expected) << c.name;
+            }
+        }
+}
 
 TEST(SingleSidedEmitter, FacingTheFloorGivesTheAnalyticIrradiance) {
     const double expected = kAlbedo / kPi * square_irradiance(kLe, kSide, kHeight);

@@ -117,9 +117,12 @@ TEST(JobFile, ColourAndOutputKeys) {
 
 TEST(JobFile, LightKeys) {
     const JobFile f = parse_job_file(
-        R"({"defaults": {"light_units": "radiometric", "exposure": 1.5},
-            "jobs": [{"scene": "a.gltf", "default_light": "off", "exposure": -2}]})",
+        R"({"defaults": {"light_units": "radiometric", "exposure": 1.5, "light_sampler": "power"},
+            "jobs": [{"scene": "a.gltf", "default_light": "off", "exposure": -2,
+                      "triangle_sampling": "area"}]})",
         "/jobs/j.json");
+    EXPECT_EQ(f.defaults.light_sampler, "power");
+    EXPECT_EQ(f.jobs[0].settings.triangle_sampling, "area");
     EXPECT_EQ(f.defaults.light_units, "radiometric");
     EXPECT_EQ(f.defaults.exposure, 1.5);
     EXPECT_FALSE(f.defaults.default_light);
@@ -133,7 +136,11 @@ TEST(JobFile, LightKeys) {
         {R"("default_light": "maybe")",
          "j.json: jobs[0].default_light: 'maybe' is not one of: auto, on, off"},
         {R"("exposure": "bright")", "j.json: jobs[0].exposure: expected a finite number"},
-        {R"("exposure": 100)", "j.json: jobs[0].exposure: expected stops in [-64, 64]"}};
+        {R"("exposure": 100)", "j.json: jobs[0].exposure: expected stops in [-64, 64]"},
+        {R"("light_sampler": "tree")",
+         "j.json: jobs[0].light_sampler: 'tree' is not one of: uniform, power, bvh, auto"},
+        {R"("triangle_sampling": "sphere")",
+         "j.json: jobs[0].triangle_sampling: 'sphere' is not one of: area, solid-angle"}};
     for (const auto& [member, message] : bad) {
         try {
             parse_job_file(std::string(R"({"jobs": [{"scene": "a.gltf", )") + member + "}]}",

@@ -4,8 +4,6 @@
 
 namespace penumbra::test {
 
-namespace {
-
 uint32_t add_mesh_object(Scene& scene, TriangleMesh mesh, const std::string& name) {
     for (const Vec3& p : mesh.positions) mesh.bounds.expand(p);
     mesh.name = name;
@@ -17,8 +15,6 @@ uint32_t add_mesh_object(Scene& scene, TriangleMesh mesh, const std::string& nam
     scene.objects.push_back(obj);
     return static_cast<uint32_t>(scene.objects.size() - 1);
 }
-
-}  // namespace
 
 uint32_t add_quad_object(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, int material) {
     TriangleMesh m;

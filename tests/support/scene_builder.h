@@ -7,6 +7,8 @@
 
 namespace penumbra::test {
 
+// Adds an object made of one mesh (its bounds and name filled in); returns its index.
+uint32_t add_mesh_object(Scene& scene, TriangleMesh mesh, const std::string& name);
 // Adds an object made of one mesh (a quad of two triangles, corners counter-clockwise as
 // seen from its front) and returns the object index. No instance is created.
 uint32_t add_quad_object(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, int material);

@@ -88,7 +88,7 @@ TEST(TriangleLight, AreaSamplingMatchesSolidAnglePdf) {
     const uint32_t quad =
         test::add_quad_object(scene, {-1, 0.3f, -1}, {2, 0.3f, -1}, {2, 0.3f, 2}, {-1, 0.3f, 2}, 0);
     test::add_instance(scene, quad, Transform::rotate({0.1f, 0, 0.05f, 1}));
-    const TriangleLight light(scene, 0, 0, 0, Spectrum(3));
+    const TriangleLight light(scene, 0, 0, 0, Spectrum(3), TriangleSampling::Area);
     const ShadingPoint ref{{0, 0, 0}, {0, 1, 0}};
     test::SphereChi2Options opt;
     opt.significance = kLevel;

@@ -62,16 +62,17 @@ TEST(TriangleLight, SingleSidedEmitsFromItsFrontOnlyAndTwoSidedFromBoth) {
         EXPECT_GT(pdf_above, 0);
         // The two points are mirror images through the plane: equal densities.
         EXPECT_NEAR(pdf_below, two_sided ? pdf_above : 0.0f, 1e-4f * pdf_above);
-        EXPECT_NEAR(light.pdf_at(above, c, 0), pdf_above, 1e-4f * pdf_above);
-        EXPECT_NEAR(light.pdf_at(below, c, 0), pdf_below, 1e-4f * pdf_above);
+        EXPECT_NEAR(light.pdf_at({above, {}}, c, 0), pdf_above, 1e-4f * pdf_above);
+        EXPECT_NEAR(light.pdf_at({below, {}}, c, 0), pdf_below, 1e-4f * pdf_above);
     }
 }
 
 // For refs on both sides and random points of both triangles: sample_Li, pdf_Li and
 // pdf_at are nonzero exactly where shade() finds emission towards ref at that point, and
 // that is the side `front` (the world direction of the glTF front face) points to.
-void expect_sides_agree(const Scene& scene, float time, Vec3 front, const char* what) {
-    const LightSet lights(scene, nullptr);
+void expect_sides_agree_for(const Scene& scene, float time, Vec3 front, const char* what,
+                            TriangleSampling sampling) {
+    const LightSet lights(scene, nullptr, {LightSamplerType::Power, sampling});
     ASSERT_EQ(lights.triangle_light_count(), 2u) << what;
     Rng rng(3);
     int emitting = 0, dark = 0;
@@ -100,7 +101,7 @@ void expect_sides_agree(const Scene& scene, float time, Vec3 front, const char* 
             const bool lit = !is_black(shade(scene, sp, wo).emission);
             const bool faces_ref = dot(front, wo) > 0;
             EXPECT_EQ(lit, faces_ref || light.two_sided()) << what << " prim " << prim;
-            EXPECT_EQ(light.pdf_at(ref, sp.p, time) > 0, lit) << what;
+            EXPECT_EQ(light.pdf_at({ref, {}}, sp.p, time) > 0, lit) << what;
             EXPECT_EQ(light.pdf_Li({ref, {}}, -wo, time) > 0, lit) << what;
             EXPECT_EQ(sample_count(light, ref, time, 4) == 4, lit) << what;
             (lit ? emitting : dark)++;
@@ -111,6 +112,12 @@ void expect_sides_agree(const Scene& scene, float time, Vec3 front, const char* 
     if (!scene.materials[0].double_sided) {
         EXPECT_GT(dark, 100) << what;
     }
+}
+
+// Both strategies: area sampling and solid-angle sampling decide the side alike.
+void expect_sides_agree(const Scene& scene, float time, Vec3 front, const char* what) {
+    expect_sides_agree_for(scene, time, front, what, TriangleSampling::Area);
+    expect_sides_agree_for(scene, time, front, what, TriangleSampling::SolidAngle);
 }
 
 TEST(TriangleLight, MirroredInstancesKeepTheGltfFrontFace) {
