@@ -118,6 +118,10 @@ sed -e 's/"out_dir": "long"/"out_dir": "long_ref"/' long.json >long_ref.json
 array=$(awk '/^array/ {print $2; exit}' long.farm/jobs.txt)  # item 0 is in the first
 merge=$(awk '/^merge/ {print $2}' long.farm/jobs.txt)
 log=long.farm/logs/task-${array}_0.log
+# Slurm requeues a preempted job in the same step as it stops it, so its dependants never
+# see it finished; a signal and a requeue by hand are two steps, so the merge is held
+# between them (on a quiet machine the other tasks would end, and the merge start, first).
+scontrol hold "$merge"
 for _ in $(seq 1 300); do grep -q ': started, ' "$log" 2>/dev/null && break; sleep 0.1; done
 # At once: the last pass holds half the samples, and the signal must come before it.
 # Slurm 22.05's scancel exits 1 (saying nothing) when a signal reaches the batch step
@@ -131,6 +135,7 @@ for _ in $(seq 1 300); do
 done
 [ -f long/long.exr.ckpt ] || fail "no checkpoint after SIGTERM: $(tail -5 "$log")"
 if ! out=$(scontrol requeue "${array}_0" 2>&1); then fail "scontrol requeue ${array}_0: $out"; fi
+scontrol release "$merge"
 wait_gone "$merge" 240 || fail "the merge of long.json did not finish"
 grep -q 'resuming from the checkpoint at ' "$log" || fail "the requeued task did not resume: $(cat "$log")"
 grep -q '"restarts": 1' long.farm/results/item-000000.json || fail "SLURM_RESTART_COUNT not 1"

@@ -112,12 +112,16 @@ TEST(FireflyControl, RegularizationLowersTheCausticsVariance) {
     // The floor under the mirror sphere sees the panel only through it: diffuse ->
     // specular -> light paths that only BSDF sampling finds. Roughened after the first
     // diffuse bounce, NEE reaches the panel through the sphere.
+    // Measured ratio (regularized / plain) at 64 spp: 0.83-0.86 over seeds 7-9, 0.82-0.88
+    // at 256 spp; at 16 spp the estimate spreads from 0.72 to 0.95, too noisy to test.
+    // (A bound of 0.8 at 16 spp passed one seed before shadow rays from smooth-shaded
+    // points reached their lights, which changed the plain render's variance.)
     const Scene& scene = test::cornell_box();
-    const Frame u = render_with(scene, {}, 32, 16);
+    const Frame u = render_with(scene, {}, 32, 64);
     IntegratorOptions r;
     r.regularize_roughness = 0.3f;
-    const Frame f = render_with(scene, r, 32, 16);
-    EXPECT_LT(lower_variance(f), 0.8 * lower_variance(u))
+    const Frame f = render_with(scene, r, 32, 64);
+    EXPECT_LT(lower_variance(f), 0.92 * lower_variance(u))
         << lower_variance(f) << " vs " << lower_variance(u);
 }
 
