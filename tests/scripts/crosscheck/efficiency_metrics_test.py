@@ -1,11 +1,10 @@
 """Unit tests of scripts/crosscheck/efficiency*.py on synthetic images (no renderer runs):
 relMSE and efficiency against exact values and against the 1/spp law of an unbiased
 estimator, the reference-error correction, reading images back exactly, Cycles' status
-lines, and scripts/make_many_lights.py's emitter count and determinism. Run by
+lines (scripts/make_many_lights.py has tests/scripts/make_many_lights_test.py). Run by
 tests/scripts/efficiency_test.cpp:  python3 -m unittest efficiency_metrics_test
 """
 import array
-import json
 import os
 import random
 import subprocess
@@ -146,37 +145,6 @@ Fra:1 Mem:10.42M | Time:01:02:03.25 | Mem:0.90M | Scene, ViewLayer | Finished
         self.assertEqual(len(times), 2)
         self.assertAlmostEqual(times[0], 1.97)
         self.assertAlmostEqual(times[1], 3723.25)
-
-
-class ManyLights(unittest.TestCase):
-    def make(self, out, *extra):
-        subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "make_many_lights.py"),
-                        out] + list(extra), check=True)
-        with open(out) as f:
-            return json.load(f)
-
-    def emissive_triangles(self, doc):
-        emissive = {i for i, m in enumerate(doc["materials"]) if max(m.get("emissiveFactor",
-                                                                           [0, 0, 0])) > 0}
-        count = 0
-        for mesh in doc["meshes"]:
-            for p in mesh["primitives"]:
-                if p["material"] in emissive:
-                    count += doc["accessors"][p["indices"]]["count"] // 3
-        return count, len(emissive)
-
-    def test_count_and_determinism(self):
-        with tempfile.TemporaryDirectory() as tmp:
-            a, b = os.path.join(tmp, "a.gltf"), os.path.join(tmp, "b.gltf")
-            doc = self.make(a)
-            self.make(b)
-            with open(a, "rb") as fa, open(b, "rb") as fb:
-                self.assertEqual(fa.read(), fb.read())
-            self.assertEqual(self.emissive_triangles(doc), (10000, 64))
-            self.assertEqual(self.emissive_triangles(self.make(b, "--count", "123"))[0], 123)
-            strengths = [m["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"]
-                         for m in doc["materials"] if "emissiveFactor" in m]
-            self.assertAlmostEqual(max(strengths) / min(strengths), 100.0, places=3)
 
 
 if __name__ == "__main__":
