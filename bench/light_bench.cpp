@@ -132,7 +132,7 @@ void BM_AreaLightPdf(benchmark::State& state) {
 BENCHMARK(BM_AreaLightPdf)->DenseRange(0, 1);
 
 // 10,000 small emissive triangles of varied emission on a dome, as
-// tests/scripts/make_many_emitters.py writes them, built in code.
+// scripts/make_many_lights.py --layout dome writes them, built in code.
 const Scene& many_emitters() {
     static const Scene scene = [] {
         Scene s;

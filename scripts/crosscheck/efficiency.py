@@ -31,7 +31,7 @@ from efficiency_metrics import EPSILON, efficiency, median, read_rgb, reference_
 from efficiency_metrics import average
 from efficiency_render import (Cache, cycles_identity, cycles_renders, penumbra_identity,
                                penumbra_render)
-from efficiency_scenes import ALL, ROOT, prepare
+from efficiency_scenes import ALL, QUICK, ROOT, prepare
 
 REF_SEEDS = (1001, 1002)
 RENDERERS = ("penumbra", "cycles")
@@ -48,7 +48,8 @@ def parse_args(argv):
     ap.add_argument("--max-depth", type=int, default=8)
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--quick", action="store_true",
-                    help="--size 64 --spp 4,16 --ref-spp 256 --repeats 1 unless given")
+                    help="--size 64 --spp 4,16 --ref-spp 256 --repeats 1 --scenes %s unless "
+                    "given" % ",".join(QUICK))
     ap.add_argument("--renderers", default="penumbra,cycles")
     ap.add_argument("--penumbra", default=os.path.join(ROOT, "build", "bin", "penumbra"))
     ap.add_argument("--penumbra-args", default="",
@@ -68,6 +69,7 @@ def parse_args(argv):
         args.spp = args.spp if "--spp" in given else "4,16"
         args.ref_spp = args.ref_spp or 256
         args.repeats = args.repeats if "--repeats" in given else 1
+        args.scenes = args.scenes if "--scenes" in given else ",".join(QUICK)
     args.spp = sorted(int(s) for s in args.spp.split(","))
     args.ref_spp = args.ref_spp or 16 * args.spp[-1]
     if args.ref_spp < 2 or args.ref_spp % 2:

@@ -10,6 +10,10 @@ each is, how penumbra lights it and how Cycles builds its materials and world.
 - glossy: scenes/glossy.gltf, gold and silver GGX spheres of roughness 0.05-0.6 lit by an
   emissive strip; Cycles through the importer (Principled, metallic 1).
 - many-lights: scripts/make_many_lights.py's 10,000 emissive triangles; exact materials.
+- many-lights-hall: its --layout hall (10,000 single-sided emitters on a 32 m hall's
+  ceiling, where each point sees mostly the few above it) with the grey receivers made
+  Lambertian; exact materials. Cycles 3.4 has no light tree: it picks emitters by power
+  alone, as penumbra's --light-sampler power. Not in --quick.
 """
 import hashlib
 import json
@@ -30,10 +34,12 @@ SCENES = {
     "helmet": {"materials": "importer", "world": "sky"},
     "glossy": {"materials": "importer", "world": None},
     "many-lights": {"materials": "exact", "world": None},
+    "many-lights-hall": {"materials": "exact", "world": None},
     # Only for the Embree-tutorial comparison (efficiency_embree.py): the point light.
     "cornell-point": {"materials": "exact", "world": None},
 }
-ALL = ["cornell", "helmet", "glossy", "many-lights"]
+ALL = ["cornell", "helmet", "glossy", "many-lights", "many-lights-hall"]
+QUICK = ["cornell", "helmet", "glossy", "many-lights"]
 SKY_SIZE = (256, 128)
 SUN = {"elevation": 40.0, "azimuth": 60.0, "radius": 3.0, "radiance": 100.0}
 
@@ -78,16 +84,37 @@ def sky_map(path):
     os.remove(pfm)
 
 
+def without_specular(doc, material):
+    """Makes a metallic-0 glTF material Lambertian (KHR_materials_specular factor 0), which
+    Cycles' exact rebuild turns into a Diffuse BSDF (efficiency_cycles.py)."""
+    material.setdefault("extensions", {})["KHR_materials_specular"] = {"specularFactor": 0.0}
+    used = doc.setdefault("extensionsUsed", [])
+    if "KHR_materials_specular" not in used:
+        used.append("KHR_materials_specular")
+
+
 def lambertian_cornell(path):
     doc = json.load(open(os.path.join(ROOT, "scenes", "cornell-box.gltf")))
     for m in doc["materials"]:
         if m.get("name") == "mirror":
             m["pbrMetallicRoughness"] = {"baseColorFactor": [0.75, 0.75, 0.75, 1.0],
                                          "metallicFactor": 0.0, "roughnessFactor": 1.0}
-            m.setdefault("extensions", {})["KHR_materials_specular"] = {"specularFactor": 0.0}
-    used = doc.setdefault("extensionsUsed", [])
-    if "KHR_materials_specular" not in used:
-        used.append("KHR_materials_specular")
+            without_specular(doc, m)
+    with open(path, "w") as f:
+        json.dump(doc, f)
+
+
+def lambertian_hall(path):
+    """make_many_lights.py --layout hall with its non-emissive materials (the grey, albedo
+    0.7) made Lambertian, so that both renderers see the same receivers."""
+    made = path + ".tmp"
+    subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "make_many_lights.py"), made,
+                    "--layout", "hall"], check=True)
+    doc = json.load(open(made))
+    os.remove(made)
+    for m in doc["materials"]:
+        if max(m.get("emissiveFactor", [0, 0, 0])) == 0:
+            without_specular(doc, m)
     with open(path, "w") as f:
         json.dump(doc, f)
 
@@ -119,6 +146,11 @@ def prepare(name, work_dir):
         if not os.path.exists(scene):
             subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "make_many_lights.py"),
                             scene], check=True)
+        deps = [scene]
+    elif name == "many-lights-hall":
+        scene = os.path.join(work_dir, "many-lights-hall.gltf")
+        if not os.path.exists(scene):
+            lambertian_hall(scene)
         deps = [scene]
     else:
         raise ValueError("unknown scene %r (known: %s)" % (name, ", ".join(SCENES)))

@@ -1,7 +1,8 @@
 """Unit tests of scripts/crosscheck/efficiency*.py on synthetic images (no renderer runs):
 relMSE and efficiency against exact values and against the 1/spp law of an unbiased
 estimator, the reference-error correction, reading images back exactly, Cycles' status
-lines, and scripts/make_many_lights.py's emitter count and determinism. Run by
+lines, and the many-lights-hall scene's materials (scripts/make_many_lights.py has
+tests/scripts/make_many_lights_test.py). Run by
 tests/scripts/efficiency_test.cpp:  python3 -m unittest efficiency_metrics_test
 """
 import array
@@ -20,6 +21,7 @@ sys.path[:0] = [os.path.join(ROOT, "scripts", "crosscheck"), os.path.join(ROOT, 
 from efficiency_metrics import (EPSILON, average, efficiency, median, read_rgb,  # noqa: E402
                                 reference_relmse, relmse, write_pfm)
 from efficiency_render import cycles_path_tracing_seconds, status_seconds  # noqa: E402
+from efficiency_scenes import ALL, QUICK, SCENES, prepare  # noqa: E402
 
 PIXELS = 3 * 4096
 
@@ -148,35 +150,31 @@ Fra:1 Mem:10.42M | Time:01:02:03.25 | Mem:0.90M | Scene, ViewLayer | Finished
         self.assertAlmostEqual(times[1], 3723.25)
 
 
-class ManyLights(unittest.TestCase):
-    def make(self, out, *extra):
-        subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "make_many_lights.py"),
-                        out] + list(extra), check=True)
-        with open(out) as f:
-            return json.load(f)
-
-    def emissive_triangles(self, doc):
-        emissive = {i for i, m in enumerate(doc["materials"]) if max(m.get("emissiveFactor",
-                                                                           [0, 0, 0])) > 0}
-        count = 0
-        for mesh in doc["meshes"]:
-            for p in mesh["primitives"]:
-                if p["material"] in emissive:
-                    count += doc["accessors"][p["indices"]]["count"] // 3
-        return count, len(emissive)
-
-    def test_count_and_determinism(self):
+class HallScene(unittest.TestCase):
+    def test_the_generators_hall_with_lambertian_receivers_and_exact_materials(self):
+        self.assertEqual(SCENES["many-lights-hall"]["materials"], "exact")
+        self.assertIn("many-lights-hall", ALL)
+        self.assertNotIn("many-lights-hall", QUICK)
         with tempfile.TemporaryDirectory() as tmp:
-            a, b = os.path.join(tmp, "a.gltf"), os.path.join(tmp, "b.gltf")
-            doc = self.make(a)
-            self.make(b)
-            with open(a, "rb") as fa, open(b, "rb") as fb:
-                self.assertEqual(fa.read(), fb.read())
-            self.assertEqual(self.emissive_triangles(doc), (10000, 64))
-            self.assertEqual(self.emissive_triangles(self.make(b, "--count", "123"))[0], 123)
-            strengths = [m["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"]
-                         for m in doc["materials"] if "emissiveFactor" in m]
-            self.assertAlmostEqual(max(strengths) / min(strengths), 100.0, places=3)
+            made = prepare("many-lights-hall", tmp)
+            raw = os.path.join(tmp, "raw.gltf")
+            subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "make_many_lights.py"),
+                            raw, "--layout", "hall"], check=True)
+            with open(made["scene"]) as f, open(raw) as g:
+                doc, want = json.load(f), json.load(g)
+            self.assertEqual(made["hash"], prepare("many-lights-hall", tmp)["hash"])
+        # Only the receivers change: each gets KHR_materials_specular factor 0 (what Cycles'
+        # exact rebuild needs for a Diffuse BSDF); emitters and geometry stay as generated.
+        receivers = 0
+        for m in want["materials"]:
+            if max(m.get("emissiveFactor", [0, 0, 0])) == 0:
+                self.assertEqual(m["pbrMetallicRoughness"]["metallicFactor"], 0)
+                m.setdefault("extensions", {})["KHR_materials_specular"] = {
+                    "specularFactor": 0.0}
+                receivers += 1
+        self.assertEqual(receivers, 1)
+        want["extensionsUsed"].append("KHR_materials_specular")
+        self.assertEqual(doc, want)
 
 
 if __name__ == "__main__":
