@@ -54,6 +54,9 @@ def parse_args(argv):
     ap.add_argument("--penumbra", default=os.path.join(ROOT, "build", "bin", "penumbra"))
     ap.add_argument("--penumbra-args", default="",
                     help="extra penumbra render options, e.g. '--sampler sobol'")
+    ap.add_argument("--retime", action="store_true",
+                    help="render every timed render again (keep the references): the cache "
+                         "keeps each render's time, so a run under another load would mix loads")
     ap.add_argument("--reuse-references", action="store_true",
                     help="use a cached reference made by another penumbra/Blender build")
     ap.add_argument("--cache", default=os.path.join(
@@ -210,6 +213,8 @@ def log(message):
 def main(argv):
     args = parse_args(argv)
     started = time.time()
+    if args.retime:
+        Cache.retime_since = started
     identities = {"penumbra": penumbra_identity(args.penumbra)}
     if "cycles" in args.renderers:
         identities["cycles"] = cycles_identity()

@@ -45,7 +45,12 @@ def settings_key(settings):
 
 
 class Cache:
-    """Where a scene's renders by one renderer live."""
+    """Where a scene's renders by one renderer live. A render's times are cached with its
+    image, so a run on a machine under another load would mix loads in one table: with
+    retime_since set (efficiency.py --retime), timed renders older than it count as not
+    done and are rendered again; references (untimed) are kept."""
+
+    retime_since = None
 
     def __init__(self, root, scene, prepared, identity, settings):
         self.scene_dir = os.path.join(root, "%s-%s" % (scene, prepared["hash"]))
@@ -60,6 +65,9 @@ class Cache:
         """Rendered, and timed with CPU seconds unless need_cpu is False (references)."""
         p = self.path(spp, seed)
         if not (os.path.exists(p) and os.path.exists(p + ".json")):
+            return False
+        if need_cpu and Cache.retime_since is not None and \
+                os.path.getmtime(p + ".json") < Cache.retime_since:
             return False
         return not need_cpu or "cpu_s" in self.times(spp, seed)
 

@@ -20,7 +20,7 @@ sys.path[:0] = [os.path.join(ROOT, "scripts", "crosscheck"), os.path.join(ROOT, 
 
 from efficiency_metrics import (EPSILON, average, efficiency, median, read_rgb,  # noqa: E402
                                 reference_relmse, relmse, write_pfm)
-from efficiency_render import cycles_path_tracing_seconds, status_seconds  # noqa: E402
+from efficiency_render import Cache, cycles_path_tracing_seconds, status_seconds  # noqa: E402
 from efficiency_scenes import ALL, QUICK, SCENES, prepare  # noqa: E402
 
 PIXELS = 3 * 4096
@@ -148,6 +148,25 @@ Fra:1 Mem:10.42M | Time:01:02:03.25 | Mem:0.90M | Scene, ViewLayer | Finished
         self.assertEqual(len(times), 2)
         self.assertAlmostEqual(times[0], 1.97)
         self.assertAlmostEqual(times[1], 3723.25)
+
+
+class Retime(unittest.TestCase):
+    def test_timed_renders_from_before_the_run_are_rendered_again_references_kept(self):
+        with tempfile.TemporaryDirectory() as root:
+            cache = Cache(root, "s", {"hash": "h"}, {"key": "k"}, {"spp": 1})
+            for spp in (16, 512):
+                open(cache.path(spp, 1), "w").close()
+                json.dump({"seconds": 1.0, "cpu_s": 2.0}, open(cache.path(spp, 1) + ".json", "w"))
+            old = os.path.getmtime(cache.path(16, 1) + ".json")
+            try:
+                self.assertTrue(cache.done(16, 1))
+                Cache.retime_since = old + 1
+                self.assertFalse(cache.done(16, 1))                 # timed: render again
+                self.assertTrue(cache.done(512, 1, need_cpu=False))  # a reference: kept
+                os.utime(cache.path(16, 1) + ".json", (old + 2, old + 2))
+                self.assertTrue(cache.done(16, 1))                  # rendered in this run
+            finally:
+                Cache.retime_since = None
 
 
 class HallScene(unittest.TestCase):
