@@ -5,26 +5,11 @@
 
 #include "core/accel/embree_accel.h"
 #include "core/camera/perspective_camera.h"
-#include "core/lights/point_light.h"
 #include "integrators/render.h"
 #include "support/scene_builder.h"
 
 namespace penumbra {
 namespace {
-
-struct SphereScene {
-    Scene scene;
-    SphereScene() {
-        const int mat = test::add_lambertian(scene, Spectrum(0.6f, 0.5f, 0.4f));
-        test::add_instance(scene, test::add_sphere_object(scene, mat, 12, 24), Transform());
-        const int floor = test::add_lambertian(scene, Spectrum(0.3f));
-        test::add_instance(
-            scene,
-            test::add_quad_object(scene, {-5, -1, 5}, {5, -1, 5}, {5, -1, -5}, {-5, -1, -5}, floor),
-            Transform());
-        scene.lights.push_back(std::make_unique<PointLight>(Vec3(2, 3, 2), Spectrum(20)));
-    }
-};
 
 struct Result {
     Image beauty;
@@ -32,10 +17,10 @@ struct Result {
 };
 
 Result render_sphere(AovSet aovs, int threads, bool in_two_passes = false) {
-    const SphereScene s;
-    EmbreeAccel accel(s.scene);
-    const LightSet lights(s.scene, nullptr);
-    const RenderContext ctx{s.scene, accel, lights};
+    const Scene scene = test::make_lit_sphere_on_floor();
+    EmbreeAccel accel(scene);
+    const LightSet lights(scene, nullptr);
+    const RenderContext ctx{scene, accel, lights};
     const PerspectiveCamera camera(Transform::look_at({0, 0.5f, 4}, {0, 0, 0}, {0, 1, 0}), 0.8f, 24,
                                    18);
     const auto integrator = make_integrator("path", {});

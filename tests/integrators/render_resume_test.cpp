@@ -7,7 +7,6 @@
 
 #include "core/accel/embree_accel.h"
 #include "core/camera/perspective_camera.h"
-#include "core/lights/point_light.h"
 #include "integrators/render.h"
 #include "io/checkpoint.h"
 #include "support/gltf_builder.h"
@@ -19,27 +18,11 @@ namespace {
 const AovSet kAovs = parse_aovs("albedo,normal,depth,position,variance,samples");
 constexpr int kW = 24, kH = 18;
 
-// A sphere on a floor under a point light: edges and indirect light, so every sample
-// and every pixel differs.
-struct SphereScene {
-    Scene scene;
-    SphereScene() {
-        const int mat = test::add_lambertian(scene, Spectrum(0.6f, 0.5f, 0.4f));
-        test::add_instance(scene, test::add_sphere_object(scene, mat, 12, 24), Transform());
-        const int floor = test::add_lambertian(scene, Spectrum(0.3f));
-        test::add_instance(
-            scene,
-            test::add_quad_object(scene, {-5, -1, 5}, {5, -1, 5}, {5, -1, -5}, {-5, -1, -5}, floor),
-            Transform());
-        scene.lights.push_back(std::make_unique<PointLight>(Vec3(2, 3, 2), Spectrum(20)));
-    }
-};
-
 struct Fixture {
-    SphereScene s;
-    EmbreeAccel accel{s.scene};
-    LightSet lights{s.scene, nullptr};
-    RenderContext ctx{s.scene, accel, lights};
+    Scene scene = test::make_lit_sphere_on_floor();
+    EmbreeAccel accel{scene};
+    LightSet lights{scene, nullptr};
+    RenderContext ctx{scene, accel, lights};
     PerspectiveCamera camera{Transform::look_at({0, 0.5f, 4}, {0, 0, 0}, {0, 1, 0}), 0.8f, kW, kH};
     std::unique_ptr<Integrator> integrator = make_integrator("path", {});
     RenderOptions opt;

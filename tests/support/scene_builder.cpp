@@ -1,6 +1,9 @@
 #include "support/scene_builder.h"
 
 #include <cmath>
+#include <memory>
+
+#include "core/lights/point_light.h"
 
 namespace penumbra::test {
 
@@ -88,6 +91,18 @@ int add_lambertian(Scene& scene, Spectrum albedo) {
     m.specular = 0;
     scene.materials.push_back(m);
     return static_cast<int>(scene.materials.size() - 1);
+}
+
+Scene make_lit_sphere_on_floor() {
+    Scene scene;
+    const int mat = add_lambertian(scene, Spectrum(0.6f, 0.5f, 0.4f));
+    add_instance(scene, add_sphere_object(scene, mat, 12, 24), Transform());
+    const int floor = add_lambertian(scene, Spectrum(0.3f));
+    add_instance(scene,
+                 add_quad_object(scene, {-5, -1, 5}, {5, -1, 5}, {5, -1, -5}, {-5, -1, -5}, floor),
+                 Transform());
+    scene.lights.push_back(std::make_unique<PointLight>(Vec3(2, 3, 2), Spectrum(20)));
+    return scene;
 }
 
 }  // namespace penumbra::test

@@ -20,5 +20,8 @@ uint32_t add_sphere_object(Scene& scene, int material, int rings = 24, int segme
 uint32_t add_instance(Scene& scene, uint32_t object, const Transform& to_world);
 // A material that is exactly Lambertian with the given albedo.
 int add_lambertian(Scene& scene, Spectrum albedo);
+// A Lambertian sphere (12 x 24) on a floor under a point light: edges and indirect light,
+// so every sample and every pixel differs (for render-loop tests).
+Scene make_lit_sphere_on_floor();
 
 }  // namespace penumbra::test
