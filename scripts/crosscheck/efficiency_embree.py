@@ -2,7 +2,9 @@
 scripts/crosscheck/efficiency.py --embree: its Cornell box (cornell_box.ecs: the OBJ, pure
 Lambert, one point light) at 256 x 256, 64 spp, 8 path segments, 2 threads, against
 penumbra and Cycles on scenes/cornell-box-point.gltf (the same room from
-make_cornell_box.py, a point light, and a mirror sphere the OBJ lacks) at the same settings.
+make_cornell_box.py, a point light, and a mirror sphere the OBJ lacks) at the same settings,
+and penumbra on the tutorial's own scene converted to glTF (embree_cornell.py: its OBJ with
+albedo-1 walls, its point light and camera).
 The tutorial's time is its whole process (it loads its 36-triangle OBJ in about 50 ms).
 """
 import copy
@@ -59,6 +61,20 @@ def embree_table(args, identities):
         times = [cyc.times(SPP, s) for s in seeds]
         rows.append(("Cycles", median([t["render_s"] for t in times]),
                      median([t["process_s"] for t in times]), median([t["cpu_s"] for t in times])))
+    # penumbra on the tutorial's own OBJ, light and camera (embree_cornell.py): the same
+    # work as the tutorial, ray for ray up to the two renderers' sampling.
+    if os.path.exists(ECS):
+        own = prepare("embree-cornell", os.path.join(args.cache, "scenes"))
+        pen = Cache(args.cache, "embree-cornell", own, identities["penumbra"],
+                    {"size": SIZE, "max_depth": SEGMENTS, "threads": args.threads,
+                     "extra": args.penumbra_args})
+        for seed in seeds:
+            if not pen.done(SPP, seed):
+                penumbra_render(a, own, pen, SPP, seed)
+        times = [pen.times(SPP, s) for s in seeds]
+        rows.append(("penumbra, the tutorial's scene", median([t["render_s"] for t in times]),
+                     median([t["process_s"] for t in times]),
+                     median([t["cpu_s"] for t in times])))
     embree = embree_seconds(args.threads, args.repeats)
     lines = ["Equal spp: Cornell box with a point light, %d x %d, %d spp, %d path segments, "
              "%d threads; medians of %d. CPU seconds: the whole process for penumbra and "

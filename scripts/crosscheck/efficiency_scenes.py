@@ -37,6 +37,8 @@ SCENES = {
     "many-lights-hall": {"materials": "exact", "world": None},
     # Only for the Embree-tutorial comparison (efficiency_embree.py): the point light.
     "cornell-point": {"materials": "exact", "world": None},
+    # penumbra only, for the same table: Embree's tutorial scene (embree_cornell.py).
+    "embree-cornell": {"materials": "exact", "world": None},
 }
 ALL = ["cornell", "helmet", "glossy", "many-lights", "many-lights-hall"]
 QUICK = ["cornell", "helmet", "glossy", "many-lights"]
@@ -137,6 +139,13 @@ def prepare(name, work_dir):
         deps = [scene, os.path.join(os.path.dirname(scene), "FlightHelmet.bin"), env]
     elif name == "cornell-point":
         scene = os.path.join(ROOT, "scenes", "cornell-box-point.gltf")
+        deps = [scene]
+    elif name == "embree-cornell":
+        # Embree's tutorial scene itself (embree_cornell.py), for the equal-spp table.
+        scene = os.path.join(work_dir, "embree-cornell.gltf")
+        if not os.path.exists(scene):
+            subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "crosscheck",
+                                                         "embree_cornell.py"), scene], check=True)
         deps = [scene]
     elif name == "glossy":
         scene = os.path.join(ROOT, "scenes", "glossy.gltf")

@@ -55,5 +55,36 @@ TEST(EfficiencyHarness, LambertianCornellSphereGetsTheSameDirectLightFromBothEst
         << "light sampling " << light << ", BSDF sampling " << bsdf;
 }
 
+TEST(EfficiencyHarness, EmbreeTutorialSceneConvertsToTheSameView) {
+    // embree_cornell.py turns the tutorial's OBJ, point light and camera into glTF: the
+    // render must show the room as the tutorial does (red wall left, green right, lit
+    // floor below), so that the equal-spp comparison times the same picture.
+    const std::string ecs = "/usr/share/doc/embree3/models/cornell_box.ecs";
+    if (std::system(("test -f " + ecs).c_str()) != 0)
+        GTEST_SKIP() << ecs << " is missing (Debian's embree-tools, scripts/setup.sh --test)";
+    const test::ScratchDir dir;
+    const std::string scene = dir.file("embree-cornell.gltf");
+    const std::string cmd = "python3 '" + test::source_path("scripts/crosscheck/embree_cornell.py") +
+                            "' '" + scene + "'";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    const std::string exr = dir.file("e.exr");
+    const test::CliResult r = test::run_penumbra(
+        {"render", scene, "-o", exr, "--width", "32", "--spp", "16", "--max-depth", "1",
+         "--no-default-light", "--no-preview", "-q"});
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
+    const OIIO::ImageBuf image(exr);
+    auto mean = [&](int x0, int x1, int y0, int y1) {
+        return OIIO::ImageBufAlgo::computePixelStats(
+                   OIIO::ImageBufAlgo::cut(image, OIIO::ROI(x0, x1, y0, y1)))
+            .avg;
+    };
+    const auto left = mean(1, 4, 8, 24), right = mean(28, 31, 8, 24), floor = mean(4, 10, 27, 31);
+    ASSERT_GE(left.size(), 3u);
+    EXPECT_GT(left[0], 10 * (left[1] + left[2] + 1e-3f)) << "the left wall is not red";
+    EXPECT_GT(right[1], 10 * (right[0] + right[2] + 1e-3f)) << "the right wall is not green";
+    EXPECT_GT(floor[0], 0.05f) << "the floor is unlit";
+}
+
 }  // namespace
 }  // namespace penumbra
