@@ -16,10 +16,12 @@ bool pass_through(const SurfacePoint& sp, const ShadingData& sd, Sampler& sample
     return true;
 }
 
-bool unoccluded(const RenderContext& ctx, Ray ray, Sampler& sampler) {
-    if (!ctx.has_alpha) return !ctx.accel.occluded(ray);
+bool unoccluded(const RenderContext& ctx, const Ray& shadow, Sampler& sampler) {
+    // By reference: a copy of the ray spawn_ray just wrote stalls on store forwarding.
+    if (!ctx.has_alpha) return !ctx.accel.occluded(shadow);
     // Walk through surfaces that let light through (stochastic alpha, as on camera
     // paths), so shadows of leaves and fences match what the camera sees.
+    Ray ray = shadow;
     for (int guard = 0; guard < 256; ++guard) {
         const std::optional<Hit> hit = ctx.accel.intersect(ray);
         if (!hit) return true;

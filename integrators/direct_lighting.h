@@ -42,7 +42,7 @@ bool pass_through(const SurfacePoint& sp, const ShadingData& sd, Sampler& sample
 
 // Whether the segment `ray` reaches its tmax unblocked. Surfaces with partial coverage
 // (alpha) block with probability alpha.
-bool unoccluded(const RenderContext& ctx, Ray ray, Sampler& sampler);
+bool unoccluded(const RenderContext& ctx, const Ray& shadow, Sampler& sampler);
 
 // One light sample at the shading point, MIS-weighted against `bsdf_samples` BSDF samples
 // per `light_samples` light samples when strategy is Mis. Returns f * Li * |cos| * w / pdf,

@@ -8,7 +8,6 @@
 namespace penumbra {
 
 namespace {
-uint64_t key(uint32_t instance, uint32_t mesh) { return (uint64_t(instance) << 32) | mesh; }
 constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 }  // namespace
 
@@ -33,25 +32,36 @@ LightSet::LightSet(const Scene& scene, std::unique_ptr<EnvironmentLight> environ
     : m_environment(std::move(environment)), m_type(options.sampler) {
     // Mean emission per material, computed once (textures can be large).
     std::vector<std::optional<Spectrum>> mean_Le(scene.materials.size() + 1);
+    auto emissive = [&](uint32_t mi) {
+        return scene.material(scene.meshes[mi].material).is_emissive();
+    };
+    size_t count = 0;
+    for (const Instance& inst : scene.instances)
+        for (uint32_t mi : scene.objects[inst.object].meshes)
+            if (emissive(mi)) count += scene.meshes[mi].triangle_count();
+    m_triangles.reserve(count);  // the lights' addresses must not move
+    m_instance_meshes.reserve(scene.instances.size() + 1);
     for (uint32_t ii = 0; ii < scene.instances.size(); ++ii) {
+        m_instance_meshes.push_back(static_cast<uint32_t>(m_emissive_meshes.size()));
         const Object& obj = scene.objects[scene.instances[ii].object];
         for (uint32_t mi : obj.meshes) {
+            if (!emissive(mi)) continue;
             const TriangleMesh& mesh = scene.meshes[mi];
             const MaterialDesc& mat = scene.material(mesh.material);
-            if (!mat.is_emissive()) continue;
             // Emitters that move within the shutter are sampled where they are at the
             // ray's time (TriangleLight::placed).
             auto& mean = mean_Le[mesh.material + 1];
             if (!mean)
                 mean = mat.emissive * mat.emissive_strength * mean_emission_texture(scene, mat);
-            m_first_triangle[key(ii, mi)] = static_cast<uint32_t>(m_triangles.size());
+            m_emissive_meshes.emplace_back(mi, static_cast<uint32_t>(m_triangles.size()));
             for (uint32_t p = 0; p < mesh.triangle_count(); ++p)
-                m_triangles.push_back(
-                    std::make_unique<TriangleLight>(scene, ii, mi, p, *mean, options.triangles));
+                m_triangles.emplace_back(scene, ii, mi, p, *mean, options.triangles);
         }
     }
+    m_instance_meshes.push_back(static_cast<uint32_t>(m_emissive_meshes.size()));
     for (const auto& l : scene.lights) m_lights.push_back(l.get());
-    for (const auto& t : m_triangles) m_lights.push_back(t.get());
+    m_first_triangle_index = static_cast<uint32_t>(m_lights.size());
+    for (const TriangleLight& t : m_triangles) m_lights.push_back(&t);
     if (m_environment) m_lights.push_back(m_environment.get());
 
     std::vector<float> power;
@@ -112,21 +122,33 @@ std::optional<SampledLight> LightSet::sample(const ShadingPoint& ref, float u) c
     return SampledLight{m_lights[chosen->first], (1 - m_p_beside) * chosen->second};
 }
 
-float LightSet::pmf(const ShadingPoint& ref, const Light* light) const {
+int64_t LightSet::index_of(const Light* light) const {
+    // Compared as addresses: a light that is not in m_triangles is never cast to one.
+    const auto a = reinterpret_cast<uintptr_t>(light);
+    const auto first = reinterpret_cast<uintptr_t>(static_cast<const Light*>(m_triangles.data()));
+    if (a >= first && a < first + m_triangles.size() * sizeof(TriangleLight))
+        return m_first_triangle_index + (a - first) / sizeof(TriangleLight);
+    if (light && light == m_environment.get()) return int64_t(m_lights.size()) - 1;
     const auto it = m_index.find(light);
-    if (it == m_index.end()) return 0;
+    return it == m_index.end() ? -1 : int64_t(it->second);
+}
+
+float LightSet::pmf(const ShadingPoint& ref, const Light* light) const {
+    const int64_t i = index_of(light);
+    if (i < 0) return 0;
+    const auto index = static_cast<uint32_t>(i);
     switch (m_type) {
         case LightSamplerType::Uniform:
             return 1.0f / m_lights.size();
         case LightSamplerType::Power:
-            return m_alias.empty() ? 0.0f : m_alias.pmf(it->second);
+            return m_alias.empty() ? 0.0f : m_alias.pmf(index);
         case LightSamplerType::Bvh:
         case LightSamplerType::Auto:  // resolved in the constructor
             break;
     }
-    if (const int32_t slot = m_beside_slot[it->second]; slot >= 0)
+    if (const int32_t slot = m_beside_slot[index]; slot >= 0)
         return m_beside_alias.empty() ? 0.0f : m_p_beside * m_beside_alias.pmf(uint32_t(slot));
-    return (1 - m_p_beside) * m_bvh.pmf(ref.p, ref.n, it->second);
+    return (1 - m_p_beside) * m_bvh.pmf(ref.p, ref.n, index);
 }
 
 std::optional<SampledLight> LightSet::sample(float u) const {
@@ -138,15 +160,17 @@ std::optional<SampledLight> LightSet::sample(float u) const {
 
 float LightSet::pmf(const Light* light) const {
     if (m_alias.empty()) return 0;
-    const auto it = m_index.find(light);
-    return it == m_index.end() ? 0.0f : m_alias.pmf(it->second);
+    const int64_t i = index_of(light);
+    return i < 0 ? 0.0f : m_alias.pmf(static_cast<uint32_t>(i));
 }
 
 const TriangleLight* LightSet::triangle_light(uint32_t instance, uint32_t mesh,
                                               uint32_t prim) const {
-    const auto it = m_first_triangle.find(key(instance, mesh));
-    if (it == m_first_triangle.end()) return nullptr;
-    return m_triangles[it->second + prim].get();
+    if (instance + 1 >= m_instance_meshes.size()) return nullptr;
+    for (uint32_t k = m_instance_meshes[instance]; k < m_instance_meshes[instance + 1]; ++k)
+        if (m_emissive_meshes[k].first == mesh)
+            return &m_triangles[m_emissive_meshes[k].second + prim];
+    return nullptr;
 }
 
 }  // namespace penumbra

@@ -6,6 +6,7 @@
 // emissive hit back to its light for MIS.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -47,6 +48,11 @@ public:
     // environment may be null.
     LightSet(const Scene& scene, std::unique_ptr<EnvironmentLight> environment,
              const LightSetOptions& options = {});
+    // m_lights points into the set itself: moving keeps the addresses, copying would not.
+    LightSet(const LightSet&) = delete;
+    LightSet& operator=(const LightSet&) = delete;
+    LightSet(LightSet&&) = default;
+    LightSet& operator=(LightSet&&) = default;
 
     // A light for the receiver ref (its geometric normal, or zero in a medium), from one
     // u in [0,1). Empty when no light can reach ref (the BVH knows some cannot).
@@ -69,12 +75,19 @@ public:
     float beside_probability() const { return m_p_beside; }
 
 private:
-    std::vector<std::unique_ptr<TriangleLight>> m_triangles;
+    // Index into m_lights, or -1. O(1) for the lights MIS asks about on every emissive
+    // hit: triangle lights by their place in m_triangles, the environment last.
+    int64_t index_of(const Light* light) const;
+
+    std::vector<TriangleLight> m_triangles;  // contiguous, never resized after building
     std::unique_ptr<EnvironmentLight> m_environment;
-    std::vector<const Light*> m_lights;
+    std::vector<const Light*> m_lights;   // the scene's lights, m_triangles, the environment
+    uint32_t m_first_triangle_index = 0;  // of m_triangles[0] in m_lights
     std::unordered_map<const Light*, uint32_t> m_index;
-    // (instance, mesh) -> index of the mesh's first triangle light; prims follow in order.
-    std::unordered_map<uint64_t, uint32_t> m_first_triangle;
+    // Per instance, its range of m_emissive_meshes: (mesh, index of the mesh's first
+    // triangle light; prims follow in order). Instances hold few emissive meshes.
+    std::vector<uint32_t> m_instance_meshes;  // instances + 1 offsets
+    std::vector<std::pair<uint32_t, uint32_t>> m_emissive_meshes;
     LightSamplerType m_type;
     AliasTable m_alias;  // by power over m_lights
     // Bvh: the tree over bounded lights (by index into m_lights), the others by power.

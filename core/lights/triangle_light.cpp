@@ -29,6 +29,9 @@ TriangleLight::TriangleLight(const Scene& scene, uint32_t instance, uint32_t mes
         m_uv1[k] = mesh.uv1.empty() ? Vec2() : mesh.uv1[i];
     }
     m_static = place(p[0], p[1], p[2], inst.to_world.swaps_handedness());
+    const MaterialDesc& mat = scene.material(m_material);
+    m_Le = mat.emissive * mat.emissive_strength;  // as emitted_radiance starts
+    m_textured = mat.emissive_texture.valid() && !is_black(m_Le);
     m_area = m_static.area;
     // Power only chooses among lights: any positive estimate keeps sampling unbiased,
     // so a moving triangle is weighed by its size at shutter open. A Lambertian emitter
@@ -48,26 +51,38 @@ TriangleLight::Placed TriangleLight::place(Vec3 p0, Vec3 p1, Vec3 p2, bool mirro
     return t;
 }
 
-TriangleLight::Placed TriangleLight::placed(float time) const {
+const TriangleLight::Placed& TriangleLight::placed(float time, Placed* scratch) const {
     if (!m_moving) return m_static;
     const TriangleMesh& mesh = m_scene->meshes[m_mesh];
     const Transform xf = instance_transform_at(m_scene->instances[m_instance], time);
     Vec3 p[3];
     for (int k = 0; k < 3; ++k)
         p[k] = xf.point(position_at(mesh, mesh.indices[3 * m_prim + k], time));
-    return place(p[0], p[1], p[2], xf.swaps_handedness());
+    *scratch = place(p[0], p[1], p[2], xf.swaps_handedness());
+    return *scratch;
 }
 
-float TriangleLight::solid_angle_pdf(Vec3 ref, Vec3 p, const Placed& t) const {
+float TriangleLight::area_pdf(Vec3 d, float dist2, float dist, const Placed& t) const {
     // Area density 1/A to solid angle at ref: dist^2 / (|cos| A). Behind a single-sided
     // triangle nothing is emitted towards ref, so sample_Li never goes there and the
     // density of reaching it is 0, as the MIS weights of BSDF-found hits need.
-    const Vec3 d = p - ref;
-    if (!emits_towards(m_scene->material(m_material), t.n, -d)) return 0;
-    const float dist2 = length_squared(d);
-    const float cos_light = std::abs(dot(t.n, d)) / std::sqrt(dist2);
+    if (!emits_to(t.n, -d)) return 0;
+    const float cos_light = std::abs(dot(t.n, d)) / dist;
     if (!(cos_light > 0) || !(t.area > 0)) return 0;
     return dist2 / (cos_light * t.area);
+}
+
+float TriangleLight::solid_angle_pdf(Vec3 ref, Vec3 p, const Placed& t) const {
+    const Vec3 d = p - ref;
+    const float dist2 = length_squared(d);
+    return area_pdf(d, dist2, std::sqrt(dist2), t);
+}
+
+Spectrum TriangleLight::Le_at(float b0, float b1, float b2) const {
+    if (!m_textured) return m_Le;
+    const Vec2 uv0 = m_uv0[0] * b0 + m_uv0[1] * b1 + m_uv0[2] * b2;
+    const Vec2 uv1 = m_uv1[0] * b0 + m_uv1[1] * b1 + m_uv1[2] * b2;
+    return emitted_radiance(*m_scene, m_scene->material(m_material), uv0, uv1);
 }
 
 namespace {
@@ -90,7 +105,7 @@ float TriangleLight::density(const ShadingPoint& ref, Vec3 p, const Placed& t) c
     const float omega = spherical_solid_angle(ref.p, t);
     if (!(omega > 0)) return solid_angle_pdf(ref.p, p, t);
     const Vec3 d = p - ref.p;
-    if (!emits_towards(m_scene->material(m_material), t.n, -d)) return 0;
+    if (!emits_to(t.n, -d)) return 0;
     float pdf = 1 / omega;
     if (has_normal(ref)) {
         // The warp's density at the square point that maps to this direction.
@@ -102,18 +117,21 @@ float TriangleLight::density(const ShadingPoint& ref, Vec3 p, const Placed& t) c
 }
 
 float TriangleLight::pdf_at(const ShadingPoint& ref, Vec3 p, float time) const {
-    return density(ref, p, placed(time));
+    Placed scratch;
+    return density(ref, p, placed(time, &scratch));
 }
 
 std::optional<LightSample> TriangleLight::sample_Li(const ShadingPoint& ref, Vec2 u,
                                                     float time) const {
-    const Placed t = placed(time);
+    Placed scratch;
+    const Placed& t = placed(time, &scratch);
     if (!(t.area > 0)) return std::nullopt;
     float b0, b1, b2, pdf;
     Vec3 p;
-    if (const float omega = spherical_solid_angle(ref.p, t); omega > 0) {
+    const float omega = spherical_solid_angle(ref.p, t);
+    if (omega > 0) {
         // A planar triangle emits towards ref from all its points or from none.
-        if (!emits_towards(m_scene->material(m_material), t.n, ref.p - t.p[0])) return std::nullopt;
+        if (!emits_to(t.n, ref.p - t.p[0])) return std::nullopt;
         pdf = 1 / omega;
         if (has_normal(ref)) {
             // Warp product sampling (pbrt-v4, 6.5.4): the square first goes through a
@@ -126,29 +144,27 @@ std::optional<LightSample> TriangleLight::sample_Li(const ShadingPoint& ref, Vec
         const std::optional<Vec3> b = sample_spherical_triangle(t.p, ref.p, u);
         if (!b) return std::nullopt;
         b0 = b->x, b1 = b->y, b2 = b->z;
-        p = t.p[0] * b0 + t.p[1] * b1 + t.p[2] * b2;
     } else {
         const Vec2 b = square_to_triangle(u);
         b0 = 1 - b.x - b.y, b1 = b.x, b2 = b.y;
-        p = t.p[0] * b0 + t.p[1] * b1 + t.p[2] * b2;
-        pdf = solid_angle_pdf(ref.p, p, t);
     }
+    p = t.p[0] * b0 + t.p[1] * b1 + t.p[2] * b2;
     const Vec3 d = p - ref.p;
     const float dist2 = length_squared(d);
     if (!(dist2 > 0)) return std::nullopt;
     const float dist = std::sqrt(dist2);
-    const Vec3 wi = d / dist;
+    // Area sampling's density from the distance just found, not a second pass over p.
+    if (!(omega > 0)) pdf = area_pdf(d, dist2, dist, t);
     if (!(pdf > 0) || !std::isfinite(pdf)) return std::nullopt;
-    const Vec2 uv0 = m_uv0[0] * b0 + m_uv0[1] * b1 + m_uv0[2] * b2;
-    const Vec2 uv1 = m_uv1[0] * b0 + m_uv1[1] * b1 + m_uv1[2] * b2;
-    const Spectrum Le = emitted_radiance(*m_scene, m_scene->material(m_material), uv0, uv1);
+    const Spectrum Le = Le_at(b0, b1, b2);
     if (is_black(Le)) return std::nullopt;
-    return LightSample{Le, wi, dist, pdf, false};
+    return LightSample{Le, d / dist, dist, pdf, false};
 }
 
 float TriangleLight::pdf_Li(const ShadingPoint& ref, Vec3 wi, float time) const {
     // Moller-Trumbore: only used for MIS weights, never for visibility.
-    const Placed tri = placed(time);
+    Placed scratch;
+    const Placed& tri = placed(time, &scratch);
     const Vec3 e1 = tri.p[1] - tri.p[0], e2 = tri.p[2] - tri.p[0];
     const Vec3 pv = cross(wi, e2);
     const float det = dot(e1, pv);

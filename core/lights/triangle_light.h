@@ -49,12 +49,19 @@ private:
         Vec3 n;  // unit normal out of the glTF front face (as SurfacePoint's front_normal)
         float area;
     };
-    Placed placed(float time) const;
+    // The static triangle itself, or the one placed at time in *scratch.
+    const Placed& placed(float time, Placed* scratch) const;
     // mirrored: the transform swaps handedness, so the front face winds clockwise.
     static Placed place(Vec3 p0, Vec3 p1, Vec3 p2, bool mirrored);
     // Solid-angle density of area sampling at ref for point p of t; 0 from behind a
-    // single-sided triangle.
+    // single-sided triangle. area_pdf: the same from d = p - ref, dist2 = |d|^2 and
+    // dist = sqrt(dist2), which sample_Li has anyway.
     float solid_angle_pdf(Vec3 ref, Vec3 p, const Placed& t) const;
+    float area_pdf(Vec3 d, float dist2, float dist, const Placed& t) const;
+    // emits_towards(material, n, w) with the material's doubleSided kept here.
+    bool emits_to(Vec3 n, Vec3 w) const { return m_two_sided || dot(n, w) > 0; }
+    // Emitted radiance at barycentrics (b1, b2).
+    Spectrum Le_at(float b0, float b1, float b2) const;
     // The solid angle of t at ref when sample_Li samples it spherically there, else 0.
     float spherical_solid_angle(Vec3 ref, const Placed& t) const;
     // The density of sample_Li choosing point p of t from ref (either strategy).
@@ -68,6 +75,10 @@ private:
     int m_material;
     Placed m_static;  // at shutter open
     Vec2 m_uv0[3], m_uv1[3];
+    // Without an emissive texture the radiance is the same everywhere: kept here, not
+    // looked up through the material per sample.
+    bool m_textured;
+    Spectrum m_Le;
     float m_area;
     float m_power;
 };

@@ -126,6 +126,20 @@ TEST(WarpChi2, Triangle) {
     EXPECT_NEAR(r.pdf_integral, 1.0, 2e-3);
 }
 
+// The branchless form gives Heitz's two branches' values bit for bit (renders unchanged).
+TEST(Warp, TriangleEqualsHeitzBranchesExactly) {
+    Rng rng(14);
+    for (int i = 0; i < 100000; ++i) {
+        Vec2 u = next_2d(rng);
+        if (i % 8 == 0) u.y = u.x;  // the tie goes to the second branch
+        if (i % 8 == 1) u.x = i % 16 == 1 ? 0.0f : 0x1.fffffep-1f;
+        const Vec2 b = square_to_triangle(u);
+        const Vec2 ref = u.x < u.y ? Vec2(u.x / 2, u.y - u.x / 2) : Vec2(u.x - u.y / 2, u.y / 2);
+        ASSERT_EQ(b.x, ref.x) << u.x << " " << u.y;
+        ASSERT_EQ(b.y, ref.y) << u.x << " " << u.y;
+    }
+}
+
 TEST(Warp, DensitiesIntegrateToOne) {
     for (float cos_max : {0.999f, 0.5f, -0.9f})
         EXPECT_NEAR(uniform_cone_pdf(cos_max) * 2 * kPi * (1 - cos_max), 1.0f, 1e-5f);
