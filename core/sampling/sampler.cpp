@@ -82,16 +82,26 @@ uint32_t sobol_second_dimension_bits(uint32_t i) {
     return r;
 }
 
-uint32_t owen_scramble(uint32_t v, uint32_t seed) {
-    // Laine-Karras style hash on the bit-reversed value: each output bit depends only on
-    // the more significant bits of v, which is what makes it an Owen scramble.
-    uint32_t x = van_der_corput_bits(v);
+namespace {
+
+// Laine-Karras style hash of a bit-reversed fraction: each output bit depends only on the
+// bits below it (the fraction's more significant ones), which is what makes it an Owen
+// scramble.
+inline uint32_t laine_karras_hash(uint32_t x, uint32_t seed) {
     x += seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
     x ^= x * 0xc7afe638u;
     x ^= x * 0x8d22f6e6u;
-    return van_der_corput_bits(x);
+    return x;
+}
+
+float bits_to_float(uint32_t v) { return std::min(v * 0x1p-32f, 0x1.fffffep-1f); }
+
+}  // namespace
+
+uint32_t owen_scramble(uint32_t v, uint32_t seed) {
+    return van_der_corput_bits(laine_karras_hash(van_der_corput_bits(v), seed));
 }
 
 void SobolSampler::start_pixel_sample(PixelCoord p, uint32_t sample_index) {
@@ -105,15 +115,13 @@ uint64_t SobolSampler::dimension_hash() const {
     return hash_combine(hash_combine(m_pixel_hash, m_dimension), 0x50b01);
 }
 
-namespace {
-float bits_to_float(uint32_t v) { return std::min(v * 0x1p-32f, 0x1.fffffep-1f); }
-}  // namespace
-
 float SobolSampler::get_1d() {
     const uint64_t h = dimension_hash();
     ++m_dimension;
     const uint32_t index = m_permutation(m_index, static_cast<uint32_t>(h));
-    return bits_to_float(owen_scramble(van_der_corput_bits(index), static_cast<uint32_t>(h >> 32)));
+    // owen_scramble(van_der_corput_bits(index)) without the two reversals that cancel.
+    return bits_to_float(
+        van_der_corput_bits(laine_karras_hash(index, static_cast<uint32_t>(h >> 32))));
 }
 
 Vec2 SobolSampler::get_2d() {
@@ -121,9 +129,12 @@ Vec2 SobolSampler::get_2d() {
     m_dimension += 2;
     const uint32_t index = m_permutation(m_index, static_cast<uint32_t>(h));
     const uint64_t h2 = mix_bits(h);
-    return {bits_to_float(owen_scramble(van_der_corput_bits(index), static_cast<uint32_t>(h >> 32))),
-            bits_to_float(owen_scramble(sobol_second_dimension_bits(index),
-                                        static_cast<uint32_t>(h2)))};
+    // As get_1d; the second dimension comes bit-reversed from five shift-xor steps rather
+    // than the generator matrix's loop (the same values, see zsobol_sampler.h).
+    return {bits_to_float(
+                van_der_corput_bits(laine_karras_hash(index, static_cast<uint32_t>(h >> 32)))),
+            bits_to_float(van_der_corput_bits(laine_karras_hash(
+                sobol_second_dimension_reversed(index), static_cast<uint32_t>(h2))))};
 }
 
 std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t seed) {
