@@ -13,43 +13,28 @@ void IndependentSampler::start_pixel_sample(PixelCoord p, uint32_t sample_index)
     m_rng.seed(hash_values(m_seed, p.x, p.y, sample_index), hash_values(m_seed, 1));
 }
 
-uint32_t permutation_element(uint32_t i, uint32_t l, uint32_t p) {
-    uint32_t w = l - 1;
-    w |= w >> 1;
-    w |= w >> 2;
-    w |= w >> 4;
-    w |= w >> 8;
-    w |= w >> 16;
-    do {
-        i ^= p;
-        i *= 0xe170893d;
-        i ^= p >> 16;
-        i ^= (i & w) >> 4;
-        i ^= p >> 8;
-        i *= 0x0929eb3f;
-        i ^= p >> 23;
-        i ^= (i & w) >> 1;
-        i *= 1 | p >> 27;
-        i *= 0x6935fa69;
-        i ^= (i & w) >> 11;
-        i *= 0x74dcb303;
-        i ^= (i & w) >> 2;
-        i *= 0x9e501cc3;
-        i ^= (i & w) >> 2;
-        i *= 0xc860a3df;
-        i &= w;
-        i ^= i >> 5;
-    } while (i >= l);
-    // Kensler's (i + p) % l wraps at 2^32 when p > 2^32 - l and is then no permutation.
-    return (i + p % l) % l;
-}
+namespace {
 
-StratifiedSampler::StratifiedSampler(uint32_t spp, uint64_t seed) : Sampler(spp, seed) {
+// 1/n where it is exact (n a power of two), for which x * (1/n) is x / n bitwise; else 0.
+float exact_reciprocal(uint32_t n) { return (n & (n - 1)) == 0 ? 1.0f / float(n) : 0.0f; }
+
+// x / n, as a multiply where the reciprocal is exact: a division is the costliest
+// instruction of a dimension, and values stay those of the division.
+inline float divide(float x, uint32_t n, float inv) { return inv != 0 ? x * inv : x / n; }
+
+}  // namespace
+
+StratifiedSampler::StratifiedSampler(uint32_t spp, uint64_t seed)
+    : Sampler(spp, seed), m_permutation(spp) {
     // The most square factorization nx * ny = spp (a prime spp gives 1 x spp strips).
     m_nx = static_cast<uint32_t>(std::sqrt(static_cast<double>(spp)));
     while (m_nx > 1 && spp % m_nx != 0) --m_nx;
     m_nx = std::max(m_nx, 1u);
     m_ny = spp / m_nx;
+    m_columns = FixedDivisor(m_nx);
+    m_inv_spp = exact_reciprocal(spp);
+    m_inv_nx = exact_reciprocal(m_nx);
+    m_inv_ny = exact_reciprocal(m_ny);
     m_stream = hash_values(seed, 2);
 }
 
@@ -66,20 +51,18 @@ uint64_t StratifiedSampler::dimension_hash() const {
 }
 
 float StratifiedSampler::get_1d() {
-    const uint32_t stratum =
-        permutation_element(m_index, m_spp, static_cast<uint32_t>(dimension_hash()));
+    const uint32_t stratum = m_permutation(m_index, static_cast<uint32_t>(dimension_hash()));
     ++m_dimension;
-    return std::min((stratum + m_rng.next_float()) / m_spp, 0x1.fffffep-1f);
+    return std::min(divide(stratum + m_rng.next_float(), m_spp, m_inv_spp), 0x1.fffffep-1f);
 }
 
 Vec2 StratifiedSampler::get_2d() {
-    const uint32_t stratum =
-        permutation_element(m_index, m_spp, static_cast<uint32_t>(dimension_hash()));
+    const uint32_t stratum = m_permutation(m_index, static_cast<uint32_t>(dimension_hash()));
     m_dimension += 2;
-    const uint32_t sx = stratum % m_nx, sy = stratum / m_nx;
+    const uint32_t sy = m_columns.div(stratum), sx = stratum - sy * m_nx;
     const float dx = m_rng.next_float(), dy = m_rng.next_float();
-    return {std::min((sx + dx) / m_nx, 0x1.fffffep-1f),
-            std::min((sy + dy) / m_ny, 0x1.fffffep-1f)};
+    return {std::min(divide(sx + dx, m_nx, m_inv_nx), 0x1.fffffep-1f),
+            std::min(divide(sy + dy, m_ny, m_inv_ny), 0x1.fffffep-1f)};
 }
 
 uint32_t van_der_corput_bits(uint32_t i) {
@@ -99,16 +82,26 @@ uint32_t sobol_second_dimension_bits(uint32_t i) {
     return r;
 }
 
-uint32_t owen_scramble(uint32_t v, uint32_t seed) {
-    // Laine-Karras style hash on the bit-reversed value: each output bit depends only on
-    // the more significant bits of v, which is what makes it an Owen scramble.
-    uint32_t x = van_der_corput_bits(v);
+namespace {
+
+// Laine-Karras style hash of a bit-reversed fraction: each output bit depends only on the
+// bits below it (the fraction's more significant ones), which is what makes it an Owen
+// scramble.
+inline uint32_t laine_karras_hash(uint32_t x, uint32_t seed) {
     x += seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
     x ^= x * 0xc7afe638u;
     x ^= x * 0x8d22f6e6u;
-    return van_der_corput_bits(x);
+    return x;
+}
+
+float bits_to_float(uint32_t v) { return std::min(v * 0x1p-32f, 0x1.fffffep-1f); }
+
+}  // namespace
+
+uint32_t owen_scramble(uint32_t v, uint32_t seed) {
+    return van_der_corput_bits(laine_karras_hash(van_der_corput_bits(v), seed));
 }
 
 void SobolSampler::start_pixel_sample(PixelCoord p, uint32_t sample_index) {
@@ -122,25 +115,26 @@ uint64_t SobolSampler::dimension_hash() const {
     return hash_combine(hash_combine(m_pixel_hash, m_dimension), 0x50b01);
 }
 
-namespace {
-float bits_to_float(uint32_t v) { return std::min(v * 0x1p-32f, 0x1.fffffep-1f); }
-}  // namespace
-
 float SobolSampler::get_1d() {
     const uint64_t h = dimension_hash();
     ++m_dimension;
-    const uint32_t index = permutation_element(m_index, m_spp, static_cast<uint32_t>(h));
-    return bits_to_float(owen_scramble(van_der_corput_bits(index), static_cast<uint32_t>(h >> 32)));
+    const uint32_t index = m_permutation(m_index, static_cast<uint32_t>(h));
+    // owen_scramble(van_der_corput_bits(index)) without the two reversals that cancel.
+    return bits_to_float(
+        van_der_corput_bits(laine_karras_hash(index, static_cast<uint32_t>(h >> 32))));
 }
 
 Vec2 SobolSampler::get_2d() {
     const uint64_t h = dimension_hash();
     m_dimension += 2;
-    const uint32_t index = permutation_element(m_index, m_spp, static_cast<uint32_t>(h));
+    const uint32_t index = m_permutation(m_index, static_cast<uint32_t>(h));
     const uint64_t h2 = mix_bits(h);
-    return {bits_to_float(owen_scramble(van_der_corput_bits(index), static_cast<uint32_t>(h >> 32))),
-            bits_to_float(owen_scramble(sobol_second_dimension_bits(index),
-                                        static_cast<uint32_t>(h2)))};
+    // As get_1d; the second dimension comes bit-reversed from five shift-xor steps rather
+    // than the generator matrix's loop (the same values, see zsobol_sampler.h).
+    return {bits_to_float(
+                van_der_corput_bits(laine_karras_hash(index, static_cast<uint32_t>(h >> 32)))),
+            bits_to_float(van_der_corput_bits(laine_karras_hash(
+                sobol_second_dimension_reversed(index), static_cast<uint32_t>(h2))))};
 }
 
 std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t seed) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/math/vec.h"
+#include "core/sampling/permutation.h"
 #include "core/sampling/rng.h"
 
 namespace penumbra {
@@ -69,6 +70,11 @@ public:
 private:
     uint64_t dimension_hash() const;
     uint32_t m_nx, m_ny;
+    // What depends on spp alone, set up once: the strata permutation, the split of a 2D
+    // stratum into (x, y), and 1/spp, 1/nx, 1/ny where exact (0 where not).
+    HashedPermutation m_permutation;
+    FixedDivisor m_columns;
+    float m_inv_spp, m_inv_nx, m_inv_ny;
     uint64_t m_pixel_hash = 0;  // hash_values(seed, x, y), the prefix of every dimension's
     uint64_t m_stream = 0;      // the jitter's PCG stream, hash_values(seed, 2)
     uint32_t m_index = 0;
@@ -82,7 +88,7 @@ private:
 // scrambling). For power-of-two spp every pair of dimensions forms a (0,m,2)-net.
 class SobolSampler final : public Sampler {
 public:
-    SobolSampler(uint32_t spp, uint64_t seed) : Sampler(spp, seed) {}
+    SobolSampler(uint32_t spp, uint64_t seed) : Sampler(spp, seed), m_permutation(spp) {}
     void start_pixel_sample(PixelCoord p, uint32_t sample_index) override;
     float get_1d() override;
     Vec2 get_2d() override;
@@ -93,6 +99,7 @@ public:
 
 private:
     uint64_t dimension_hash() const;
+    HashedPermutation m_permutation;  // of the spp sample indices
     uint64_t m_pixel_hash = 0;  // hash_values(seed, x, y), the prefix of every dimension's
     uint32_t m_index = 0;
     uint32_t m_dimension = 0;
@@ -103,10 +110,6 @@ uint32_t van_der_corput_bits(uint32_t i);
 uint32_t sobol_second_dimension_bits(uint32_t i);
 // Owen scrambling of a 32-bit fraction (Burley 2020's nested uniform scramble).
 uint32_t owen_scramble(uint32_t v, uint32_t seed);
-
-// Element i of a pseudo-random permutation of [0, n) selected by key (Kensler 2013,
-// "Correlated Multi-Jittered Sampling", the cycle-walking hash permutation).
-uint32_t permutation_element(uint32_t i, uint32_t n, uint32_t key);
 
 enum class SamplerType { Independent, Stratified, Sobol, ZSobol };
 std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t seed);

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <set>
 #include <stdexcept>
 #include <vector>
 
@@ -28,34 +27,6 @@ std::vector<float> draw(Sampler& s, PixelCoord p, uint32_t index) {
         }
     }
     return v;
-}
-
-TEST(PermutationElement, IsAPermutation) {
-    for (uint32_t n : {1u, 2u, 3u, 5u, 7u, 8u, 12u, 16u, 17u, 100u, 1000u, 1023u, 1024u, 1025u})
-        // Keys near 2^32 once made the final offset wrap around.
-        for (uint32_t key : {0u, 1u, 7u, 12345u, 0xdeadbeefu, 0xfffffff0u, 0xffffffffu}) {
-            std::vector<int> hits(n, 0);
-            for (uint32_t i = 0; i < n; ++i) {
-                const uint32_t e = permutation_element(i, n, key);
-                ASSERT_LT(e, n) << "n " << n << " key " << key;
-                ++hits[e];
-            }
-            for (uint32_t e = 0; e < n; ++e)
-                EXPECT_EQ(hits[e], 1) << "n " << n << " key " << key << " element " << e;
-        }
-}
-
-TEST(PermutationElement, KeysSelectDifferentPermutations) {
-    const uint32_t n = 12;
-    std::set<std::vector<uint32_t>> seen;
-    for (uint32_t key = 0; key < 16; ++key) {
-        std::vector<uint32_t> perm;
-        for (uint32_t i = 0; i < n; ++i)
-            perm.push_back(permutation_element(i, n, key * 0x9e3779b9u));
-        seen.insert(perm);
-    }
-    // 12! permutations: 16 keys colliding more than once would be a broken hash.
-    EXPECT_GE(seen.size(), 15u);
 }
 
 TEST(StratifiedSampler, OneSamplePerStratumInEveryDimension) {

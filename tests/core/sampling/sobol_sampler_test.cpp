@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
+#include "core/sampling/hash.h"
 #include "core/sampling/sampler.h"
 
 namespace penumbra {
@@ -29,6 +31,33 @@ TEST(SobolSampler, OwenScrambleIsABijectionThatKeepsPrefixes) {
                 EXPECT_EQ(same_prefix, (sa >> (32 - m)) == (sb >> (32 - m)));
             }
         }
+}
+
+TEST(SobolSampler, ValuesAreTheScrambledSequenceAsDefined) {
+    // The sampler skips bit reversals that cancel; its values must stay those of the
+    // definition: sample index permuted per (pixel, dimension), then the two (0,2)
+    // dimensions Owen-scrambled with the dimension hash's halves.
+    auto to_float = [](uint32_t v) { return std::min(v * 0x1p-32f, 0x1.fffffep-1f); };
+    for (uint32_t spp : {16u, 12u}) {
+        SobolSampler sampler(spp, 7);
+        for (const PixelCoord p : {PixelCoord{0, 0}, PixelCoord{37, 5}})
+            for (uint32_t i = 0; i < spp; ++i) {
+                sampler.start_pixel_sample(p, i);
+                for (uint32_t dim = 0; dim < 12; dim += 3) {
+                    const uint64_t h1 = hash_values(7, p.x, p.y, dim, 0x50b01);
+                    const uint32_t i1 = permutation_element(i, spp, uint32_t(h1));
+                    EXPECT_EQ(sampler.get_1d(),
+                              to_float(owen_scramble(van_der_corput_bits(i1), uint32_t(h1 >> 32))));
+                    const uint64_t h2 = hash_values(7, p.x, p.y, dim + 1, 0x50b01);
+                    const uint32_t i2 = permutation_element(i, spp, uint32_t(h2));
+                    const Vec2 u = sampler.get_2d();
+                    EXPECT_EQ(u.x, to_float(owen_scramble(van_der_corput_bits(i2),
+                                                           uint32_t(h2 >> 32))));
+                    EXPECT_EQ(u.y, to_float(owen_scramble(sobol_second_dimension_bits(i2),
+                                                           uint32_t(mix_bits(h2)))));
+                }
+            }
+    }
 }
 
 // For power-of-two spp, every 2D pair of a pixel's samples is a (0,m,2)-net: each
