@@ -56,6 +56,7 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
     };
     MaterialOptions materials = ctx.materials;
     for (;;) {
+        // The given hit is the camera ray's own: after an alpha pass-through, trace again.
         const std::optional<Hit> hit =
             first_hit && depth == 0 && passes == 0 ? *first_hit : ctx.accel.intersect(ray);
         // The medium the segment lies in absorbs along it up to the hit. A ray that
@@ -108,10 +109,10 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
 
         const Bsdf& bsdf = *sd.bsdf.get();
         const Vec3 wo = sd.frame.to_local(wo_world);
+        const SideMedia sides =
+            kMedia ? side_media(ctx, media.stack, sp.material, sd.front_face) : SideMedia{};
         L += clamped(beta * sample_one_light(ctx, sp, sd, wo, ray.time, sampler, strategy, 1, 1,
-                                             kMedia ? side_media(ctx, media.stack, sp.material,
-                                                                 sd.front_face)
-                                                    : SideMedia{}),
+                                             sides),
                      clamp_for(depth + 1));
 
         const std::optional<BsdfSample> bs =
