@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,7 +23,7 @@ struct RenderContext {
     RenderContext(const Scene& scene, const Accel& accel, const LightSet& lights,
                   bool has_alpha = false, const MaterialOptions& materials = {})
         : scene(scene), accel(accel), lights(lights), has_alpha(has_alpha),
-          materials(materials), media(scene) {}
+          materials(materials), media(scene), has_volumes(media.any()) {}
 
     const Scene& scene;
     const Accel& accel;
@@ -30,6 +31,9 @@ struct RenderContext {
     bool has_alpha = false;  // some material is MASK or BLEND: rays test coverage
     MaterialOptions materials{};  // how glTF materials become BSDFs (--microfacet)
     MediumSet media;  // the interior of each material with a volume
+    // Some material has a volume (and so possibly dispersion): without one, the path
+    // tracer skips its media bookkeeping for the whole render.
+    bool has_volumes = false;
 };
 
 // Which strategies estimate light from non-delta emitters in "path": both with MIS, or
@@ -58,6 +62,16 @@ public:
     virtual ~Integrator() = default;
     // Radiance along ray (world space). Uses sampler dimensions after the camera's.
     virtual Spectrum Li(const Ray& ray, const RenderContext& ctx, Sampler& sampler) const = 0;
+    // The same for a camera ray whose closest hit the caller has traced already (empty: a
+    // miss), as the render loop does for packets of camera rays; the result must equal
+    // Li(ray, ...) for that hit. The default ignores the hit and traces again.
+    virtual Spectrum Li_from_hit(const Ray& ray, const std::optional<Hit>& hit,
+                                 const RenderContext& ctx, Sampler& sampler) const {
+        (void)hit;
+        return Li(ray, ctx, sampler);
+    }
+    // Whether Li_from_hit uses the hit (only then does the loop trace camera packets).
+    virtual bool uses_first_hit() const { return false; }
 };
 
 // Names accepted by make_integrator, with one-line descriptions (for --help).

@@ -16,8 +16,27 @@ Spectrum clamped(Spectrum c, float limit) {
 
 }  // namespace
 
-Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
-                            Sampler& sampler) const {
+Spectrum PathIntegrator::Li(const Ray& ray, const RenderContext& ctx, Sampler& sampler) const {
+    return dispatch(ray, nullptr, ctx, sampler);
+}
+
+Spectrum PathIntegrator::Li_from_hit(const Ray& ray, const std::optional<Hit>& hit,
+                                     const RenderContext& ctx, Sampler& sampler) const {
+    return dispatch(ray, &hit, ctx, sampler);
+}
+
+Spectrum PathIntegrator::dispatch(const Ray& ray, const std::optional<Hit>* first_hit,
+                                  const RenderContext& ctx, Sampler& sampler) const {
+    if (ctx.has_volumes)
+        return ctx.has_alpha ? trace<true, true>(ray, first_hit, ctx, sampler)
+                             : trace<true, false>(ray, first_hit, ctx, sampler);
+    return ctx.has_alpha ? trace<false, true>(ray, first_hit, ctx, sampler)
+                         : trace<false, false>(ray, first_hit, ctx, sampler);
+}
+
+template <bool kMedia, bool kAlpha>
+Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* first_hit,
+                               const RenderContext& ctx, Sampler& sampler) const {
     const LightStrategy strategy = m_options.strategy;
     Spectrum L(0), beta(1);
     // Product of (eta_i / eta_o)^2 over refractions: radiance scaling that Russian
@@ -37,11 +56,13 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
     };
     MaterialOptions materials = ctx.materials;
     for (;;) {
-        const std::optional<Hit> hit = ctx.accel.intersect(ray);
+        // The given hit is the camera ray's own: after an alpha pass-through, trace again.
+        const std::optional<Hit> hit =
+            first_hit && depth == 0 && passes == 0 ? *first_hit : ctx.accel.intersect(ray);
         // The medium the segment lies in absorbs along it up to the hit. A ray that
         // escapes has left every closed volume, whatever the stack says: it can only
         // still hold one whose exit the ray grazed past within rounding at an edge.
-        if (hit && !media.stack.empty()) {
+        if (kMedia && hit && !media.stack.empty()) {
             beta *= segment_transmittance(ctx, media.stack, ray, hit->t);
             if (is_black(beta)) break;
         }
@@ -60,12 +81,17 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         }
         const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
         const Vec3 wo_world = normalize(-ray.d);
-        dispersion_channel(ctx, media, sp.material, sampler, beta);
-        const bool front = dot(wo_world, sp.ng) >= 0;  // as shade() decides it
-        const ShadingData sd = shade(ctx.scene, sp, wo_world, materials,
-                                     path_volume(ctx, media, sp.material, front));
+        // Without volumes these change nothing and draw no sample (path_media.h).
+        PathVolume volume;
+        if (kMedia) {
+            dispersion_channel(ctx, media, sp.material, sampler, beta);
+            const bool front = dot(wo_world, sp.ng) >= 0;  // as shade() decides it
+            volume = path_volume(ctx, media, sp.material, front);
+        }
+        const ShadingData sd = shade(ctx.scene, sp, wo_world, materials, volume);
 
-        if (pass_through(sp, sd, sampler, ray)) {
+        // Without MASK or BLEND materials every opacity is 1: nothing passes.
+        if (kAlpha && pass_through(sp, sd, sampler, ray)) {
             if (++passes > 256) break;  // a stack of holes ends the path
             continue;
         }
@@ -83,9 +109,10 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
 
         const Bsdf& bsdf = *sd.bsdf.get();
         const Vec3 wo = sd.frame.to_local(wo_world);
+        const SideMedia sides =
+            kMedia ? side_media(ctx, media.stack, sp.material, sd.front_face) : SideMedia{};
         L += clamped(beta * sample_one_light(ctx, sp, sd, wo, ray.time, sampler, strategy, 1, 1,
-                                             side_media(ctx, media.stack, sp.material,
-                                                        sd.front_face)),
+                                             sides),
                      clamp_for(depth + 1));
 
         const std::optional<BsdfSample> bs =
@@ -99,7 +126,7 @@ Spectrum PathIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         // The same bump shadowing as the light samples' (direct_lighting.h).
         beta *= bs->weight() * bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, wi_world);
         // The frame faces wo: a sample below it crossed the surface, into or out of a volume.
-        if (bs->wi.z < 0) cross_surface(ctx, media.stack, sp.material, sd.front_face);
+        if (kMedia && bs->wi.z < 0) cross_surface(ctx, media.stack, sp.material, sd.front_face);
         eta_scale *= bs->eta * bs->eta;
         specular_bounce = bs->is_specular();
         if (!specular_bounce && m_options.regularize_roughness > 0)

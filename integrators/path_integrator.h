@@ -13,8 +13,19 @@ class PathIntegrator final : public Integrator {
 public:
     explicit PathIntegrator(const IntegratorOptions& options) : m_options(options) {}
     Spectrum Li(const Ray& ray, const RenderContext& ctx, Sampler& sampler) const override;
+    Spectrum Li_from_hit(const Ray& ray, const std::optional<Hit>& hit, const RenderContext& ctx,
+                         Sampler& sampler) const override;
+    bool uses_first_hit() const override { return true; }
 
 private:
+    // The path loop; first_hit: the camera ray's closest hit when traced already (nullptr:
+    // trace it). Instantiated per scene kind, so that a scene without volumes or alpha
+    // does none of their work per bounce (decided once per call, from RenderContext).
+    template <bool kMedia, bool kAlpha>
+    Spectrum trace(const Ray& ray, const std::optional<Hit>* first_hit, const RenderContext& ctx,
+                   Sampler& sampler) const;
+    Spectrum dispatch(const Ray& ray, const std::optional<Hit>* first_hit,
+                      const RenderContext& ctx, Sampler& sampler) const;
     IntegratorOptions m_options;
 };
 

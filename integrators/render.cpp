@@ -66,44 +66,91 @@ bool render_samples(const RenderContext& ctx, const Camera& camera,
     // AOVs get their own instantiation of the tile loop, so a render without them does
     // no AOV work per sample.
     const bool first_hit = film.aovs().needs_first_hit();
+    // Pixels go in blocks of 4 x 2. For an integrator that takes a traced first hit, a
+    // full block's camera rays of one sample index are traced as one packet: coherent
+    // rays cost Embree about a third as much each in a packet as one by one
+    // (docs/performance.md, "Embree packets and streams"). Each pixel keeps its samples
+    // in index order, and each lane its own sampler, so the image does not change.
+    constexpr int kBlockW = 4, kBlockH = 2, kLanes = kBlockW * kBlockH;
+    const bool packets = integrator.uses_first_hit();
     auto render_tile = [&](int tile, auto with_aovs) {
-        std::unique_ptr<Sampler> samplers[2] = {prototypes[0]->clone(),
-                                                halves ? prototypes[1]->clone() : nullptr};
+        const int lanes = packets ? kLanes : 1;
+        std::unique_ptr<Sampler> samplers[2][kLanes];
+        for (int i = 0; i < lanes; ++i) {
+            samplers[0][i] = prototypes[0]->clone();
+            if (halves) samplers[1][i] = prototypes[1]->clone();
+        }
+        auto sampler_for = [&](int lane, uint32_t s) -> Sampler& {
+            return halves ? *samplers[s & 1][lane] : *samplers[0][lane];
+        };
+        // Sample s of pixel (x, y): its camera ray, the sampler left after the camera's
+        // dimensions for the integrator.
+        auto camera_ray = [&](int x, int y, uint32_t s, Sampler& sampler, FilterSample& fs) {
+            sampler.start_pixel_sample({x, y}, halves ? s >> 1 : s);
+            // Filter importance sampling: the offset follows the filter, so the sample
+            // only contributes to this pixel, with weight f/pdf.
+            fs = filter->sample(sampler.get_pixel_2d());
+            CameraSample cs;
+            cs.film = {x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
+            cs.lens = sampler.get_2d();
+            cs.time = sampler.get_1d();
+            return camera.generate_ray(cs);
+        };
+        auto add = [&](int x, int y, uint32_t s, const Ray& ray, const Spectrum& L,
+                       const FilterSample& fs) {
+            if constexpr (decltype(with_aovs)::value) {
+                AovRecord aov = first_hit
+                                    ? first_hit_aovs(ray, ctx, hash_values(options.seed, x, y, s))
+                                    : AovRecord{};
+                aov.odd = (s & 1) != 0;
+                film.add_sample(x, y, L, fs.weight, aov);
+            } else {
+                film.add_sample(x, y, L, fs.weight);
+            }
+        };
         const int x0 = (tile % tiles_x) * ts, y0 = row0 + (tile / tiles_x) * ts;
         const int x1 = std::min(x0 + ts, w), y1 = std::min(y0 + ts, row1);
         uint64_t taken = 0;
-        for (int y = y0; y < y1; ++y) {
-            // A second Ctrl-C should not wait for the pass: check once per row.
+        for (int by = y0; by < y1; by += kBlockH) {
+            // A second Ctrl-C should not wait for the pass: check once per block row.
             if (abandon(options)) {
                 abandoned = true;
                 return;
             }
-            for (int x = x0; x < x1; ++x) {
-                if (active && !(*active)[size_t(y) * w + x]) continue;
-                taken += last - first;
-                for (uint32_t s = first; s < last; ++s) {
-                    Sampler& sampler = halves ? *samplers[s & 1] : *samplers[0];
-                    sampler.start_pixel_sample({x, y}, halves ? s >> 1 : s);
-                    // Filter importance sampling: the offset follows the filter, so the
-                    // sample only contributes to this pixel, with weight f/pdf.
-                    const FilterSample fs = filter->sample(sampler.get_pixel_2d());
-                    CameraSample cs;
-                    cs.film = {x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
-                    cs.lens = sampler.get_2d();
-                    cs.time = sampler.get_1d();
-                    const Ray ray = camera.generate_ray(cs);
-                    const Spectrum L = integrator.Li(ray, ctx, sampler);
-                    if constexpr (decltype(with_aovs)::value) {
-                        AovRecord aov =
-                            first_hit ? first_hit_aovs(ray, ctx,
-                                                       hash_values(options.seed, x, y, s))
-                                      : AovRecord{};
-                        aov.odd = (s & 1) != 0;
-                        film.add_sample(x, y, L, fs.weight, aov);
-                    } else {
-                        film.add_sample(x, y, L, fs.weight);
+            for (int bx = x0; bx < x1; bx += kBlockW) {
+                int xs[kLanes], ys[kLanes], n = 0;
+                for (int y = by; y < std::min(by + kBlockH, y1); ++y)
+                    for (int x = bx; x < std::min(bx + kBlockW, x1); ++x)
+                        if (!active || (*active)[size_t(y) * w + x]) {
+                            xs[n] = x;
+                            ys[n] = y;
+                            ++n;
+                        }
+                taken += uint64_t(n) * (last - first);
+                if (packets && n == kLanes) {
+                    for (uint32_t s = first; s < last; ++s) {
+                        Ray rays[kLanes];
+                        FilterSample fs[kLanes];
+                        for (int i = 0; i < kLanes; ++i)
+                            rays[i] = camera_ray(xs[i], ys[i], s, sampler_for(i, s), fs[i]);
+                        std::optional<Hit> hits[kLanes];
+                        ctx.accel.intersect8(rays, hits);
+                        for (int i = 0; i < kLanes; ++i)
+                            add(xs[i], ys[i], s, rays[i],
+                                integrator.Li_from_hit(rays[i], hits[i], ctx, sampler_for(i, s)),
+                                fs[i]);
                     }
+                    continue;
                 }
+                // A partial block (image edge, inactive pixels) or an integrator without
+                // first hits: one ray at a time.
+                for (int i = 0; i < n; ++i)
+                    for (uint32_t s = first; s < last; ++s) {
+                        Sampler& sampler = sampler_for(0, s);
+                        FilterSample fs;
+                        const Ray ray = camera_ray(xs[i], ys[i], s, sampler, fs);
+                        add(xs[i], ys[i], s, ray, integrator.Li(ray, ctx, sampler), fs);
+                    }
             }
         }
         if (progress) progress->update(taken);

@@ -253,6 +253,7 @@ bool EmbreeAccel::do_occluded(const Ray& ray) const {
 }
 
 void EmbreeAccel::intersect8(const Ray (&rays)[8], std::optional<Hit> (&hits)[8]) const {
+    count_rays(8);
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;

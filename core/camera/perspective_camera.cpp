@@ -6,7 +6,7 @@ namespace penumbra {
 
 PerspectiveCamera::PerspectiveCamera(const Transform& to_world, float yfov, int width,
                                      int height)
-    : Camera(width, height), m_to_world(to_world) {
+    : Camera(width, height), m_to_world(to_world), m_origin(to_world.point(Vec3(0, 0, 0))) {
     m_tan_half_y = std::tan(0.5f * yfov);
     m_tan_half_x = m_tan_half_y * static_cast<float>(width) / static_cast<float>(height);
 }
@@ -17,7 +17,7 @@ Ray PerspectiveCamera::generate_ray(const CameraSample& s) const {
     const float ndc_y = 1 - 2 * s.film.y / m_height;
     const Vec3 d_cam(ndc_x * m_tan_half_x, ndc_y * m_tan_half_y, -1);
     Ray r;
-    r.o = m_to_world.point(Vec3(0, 0, 0));
+    r.o = m_origin;
     r.d = normalize(m_to_world.vector(d_cam));
     r.time = s.time;
     // One pixel's angle at the image centre (Akenine-Moller et al. 2021, eq. 30).

@@ -12,6 +12,7 @@ public:
 
 private:
     Transform m_to_world;
+    Vec3 m_origin;  // the pinhole in world space, the same for every ray
     float m_tan_half_y, m_tan_half_x;
 };
 

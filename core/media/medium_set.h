@@ -25,6 +25,12 @@ public:
     const Medium* interior(int material) const {
         return has_volume(material) ? m_media[material].get() : nullptr;
     }
+    // Whether any material has a volume: without one, paths never carry a medium.
+    bool any() const {
+        for (const auto& m : m_media)
+            if (m) return true;
+        return false;
+    }
 
 private:
     std::vector<std::shared_ptr<const Medium>> m_media;  // per material; null: thin-walled

@@ -159,6 +159,46 @@ TEST(Render, PassesAddUpToTheSameImageBitForBit) {
     }
 }
 
+// The path tracer, made to take no traced first hit: the render loop then traces every
+// camera ray on its own.
+class SingleRayPath final : public Integrator {
+public:
+    Spectrum Li(const Ray& ray, const RenderContext& ctx, Sampler& sampler) const override {
+        return m_path->Li(ray, ctx, sampler);
+    }
+
+private:
+    std::unique_ptr<Integrator> m_path = make_integrator("path", {});
+};
+
+TEST(Render, CameraPacketsGiveTheImageOfSingleRays) {
+    const Scene scene = cube_on_plane();
+    const auto path = make_integrator("path", {});
+    ASSERT_TRUE(path->uses_first_hit());
+    const SingleRayPath single;
+    // 26 x 18 in tiles of 7: full 4 x 2 blocks (packets) and partial ones (single rays).
+    const PerspectiveCamera camera(Transform::look_at({2, 3, 4}, {0, 0.3f, 0}, {0, 1, 0}), 0.7f,
+                                   26, 18);
+    RenderOptions opt;
+    opt.spp = 3;
+    opt.seed = 7;
+    opt.progress = false;
+    opt.tile_size = 7;
+    opt.threads = 2;
+    for (AccelType type : {AccelType::Embree, AccelType::BvhSah}) {
+        const std::unique_ptr<Accel> accel = make_accel(type, scene);
+        const LightSet lights(scene, nullptr);
+        const RenderContext ctx{scene, *accel, lights};
+        RenderStats a_stats, b_stats;
+        const Image a = render(ctx, camera, *path, opt, &a_stats).resolve();
+        const Image b = render(ctx, camera, single, opt, &b_stats).resolve();
+        ASSERT_EQ(a.pixels.size(), b.pixels.size());
+        EXPECT_EQ(0, std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * 4))
+            << accel_type_name(type);
+        EXPECT_EQ(a_stats.rays, b_stats.rays) << accel_type_name(type);
+    }
+}
+
 TEST(Render, InterruptsAndTimeLimitStopBetweenPasses) {
     const Scene scene = cube_on_plane();
     EmbreeAccel accel(scene);

@@ -51,6 +51,39 @@ TEST(BvhAccel, SharedObjectIsBuiltOnceAndInstancesAreHit) {
     EXPECT_EQ(accel.rays_traced(), 4u);
 }
 
+// Accel's packet query, where an accelerator has no packet kernel: each ray as intersect()
+// answers it (a miss and an untraceable ray included), counted as eight rays.
+TEST(BvhAccel, PacketOfEightEqualsSingleRays) {
+    Scene scene;
+    const uint32_t cube = test::add_cube_object(scene, -1);
+    test::add_instance(scene, cube, Transform::translate({-2, 0, 0}));
+    test::add_instance(scene, cube, Transform::translate({2, 0, 0}));
+    const BvhAccel accel(scene);
+    Ray rays[8];
+    for (int i = 0; i < 8; ++i) {
+        rays[i].o = {-3.5f + i, 0.1f * i - 0.3f, 10};
+        rays[i].d = {0, 0, -1};
+    }
+    rays[7].d = {0, 0, 0};  // untraceable
+    std::optional<Hit> hits[8];
+    accel.intersect8(rays, hits);
+    EXPECT_EQ(accel.rays_traced(), 8u);
+    int hit_count = 0;
+    for (int i = 0; i < 8; ++i) {
+        const std::optional<Hit> single = accel.intersect(rays[i]);
+        ASSERT_EQ(bool(hits[i]), bool(single)) << i;
+        if (!single) continue;
+        ++hit_count;
+        EXPECT_EQ(hits[i]->t, single->t);
+        EXPECT_EQ(hits[i]->instance, single->instance);
+        EXPECT_EQ(hits[i]->prim, single->prim);
+        EXPECT_EQ(hits[i]->b1, single->b1);
+        EXPECT_EQ(hits[i]->b2, single->b2);
+    }
+    EXPECT_GT(hit_count, 2);
+    EXPECT_LT(hit_count, 8);
+}
+
 // Embree (robust mode) counts a hit at tmin <= t <= tmax; every accelerator must agree
 // at both ends. All values here are exact in float.
 TEST(BvhAccel, IntervalEndsMatchEmbree) {
