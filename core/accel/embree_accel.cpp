@@ -129,7 +129,7 @@ struct EmbreeAccel::Impl {
 namespace {
 
 // Which instances are traced as world-space triangles (EmbreeBuildOptions::flatten):
-// those of rigid objects whose every placement is static, placed once or small in all.
+// those of rigid objects whose every placement is static, small in all.
 std::vector<bool> flattened_instances(const Scene& scene, const EmbreeBuildOptions& options) {
     std::vector<bool> flat(scene.instances.size(), false);
     if (!options.flatten) return flat;
@@ -140,18 +140,16 @@ std::vector<bool> flattened_instances(const Scene& scene, const EmbreeBuildOptio
         if (!inst.motion.empty()) rigid[inst.object] = false;
     }
     std::vector<bool> flat_object(scene.objects.size(), false);
-    size_t budget = options.flatten_shared_budget;
+    size_t budget = options.flatten_budget;
     for (size_t oi = 0; oi < scene.objects.size(); ++oi) {
         size_t triangles = 0;
         for (uint32_t mi : scene.objects[oi].meshes) {
             if (!scene.meshes[mi].motion_positions.empty()) rigid[oi] = false;
             triangles += scene.meshes[mi].triangle_count();
         }
-        if (!rigid[oi] || placements[oi] == 0) continue;
         const size_t copies = triangles * placements[oi];
-        if (placements[oi] == 1) {
-            flat_object[oi] = true;
-        } else if (copies <= options.flatten_shared_triangles && copies <= budget) {
+        if (rigid[oi] && placements[oi] > 0 && copies <= options.flatten_triangles &&
+            copies <= budget) {
             flat_object[oi] = true;
             budget -= copies;
         }

@@ -1,6 +1,6 @@
-// Embree 3 traversal: a top-level scene holding the triangles of objects that instancing
-// does not pay for (placed once, or small), in world space, and one instance geometry per
-// other Instance, of a per-Object scene. Embree types stay in the .cpp. Moving instances
+// Embree 3 traversal: a top-level scene holding the triangles of small static objects in
+// world space (instancing does not pay for them), and one instance geometry per other
+// Instance, of a per-Object scene. Embree types stay in the .cpp. Moving instances
 // and deforming meshes get Embree time steps; static ones none. Embree reads the scene's
 // index and (where padded) vertex arrays in place: the Scene must outlive the accelerator
 // and keep its meshes unchanged.
@@ -19,14 +19,16 @@ struct EmbreeBuildOptions {
     enum class Quality { Low, Medium, High };
     Quality quality = Quality::Medium;
     bool compact = false;  // leaves index the vertex arrays: less memory, slower rays
-    // One level where instancing buys nothing: a rigid, static Object's triangles go
-    // into the top-level scene, transformed to world space, when it is placed once, or
-    // when all its placements add up to at most flatten_shared_triangles (and the sum of
-    // such copies stays within flatten_shared_budget). A ray then traverses one BVH, as
-    // in Embree's tutorials. false keeps two levels everywhere (tests compare the two).
+    // One level where instancing buys nothing: a rigid Object with only static
+    // placements goes into the top-level scene as world-space triangles when its
+    // triangles times its placements are at most flatten_triangles (and the sum of such
+    // copies stays within flatten_budget), so that a ray traverses one BVH as in
+    // Embree's tutorials. Larger objects keep their own BVH even when placed once: one
+    // top-level build over all of them doubled build CPU and added 24% to the peak
+    // memory of a 2M-triangle scene (docs/performance.md). false: two levels everywhere.
     bool flatten = true;
-    size_t flatten_shared_triangles = 4096;
-    size_t flatten_shared_budget = size_t(1) << 20;
+    size_t flatten_triangles = 65536;
+    size_t flatten_budget = size_t(1) << 20;
 };
 
 class EmbreeAccel final : public Accel {

@@ -168,13 +168,13 @@ TEST(EmbreeAccel, PacketsAndStreamsAgreeWithSingleRays) {
 }
 
 // Objects that instancing does not pay for go into the top level as world-space
-// triangles (EmbreeBuildOptions::flatten): placed once, however transformed, or small in
-// all; large shared objects and moving instances stay instanced. The Hit is the one
+// triangles (EmbreeBuildOptions::flatten): small in all (here at most 1000 triangles),
+// however transformed; larger objects and moving instances stay instanced. The Hit is the one
 // through instances: same instance, mesh and triangle, t and u, v within the
 // cross-check's tolerances (accel_check.h), on every kind of check ray.
 TEST(EmbreeAccel, FlattenedObjectsGiveTheHitsOfInstances) {
     Scene scene;
-    const uint32_t once = test::add_sphere_object(scene, -1, 12, 24);
+    const uint32_t once = test::add_sphere_object(scene, -1, 12, 24);  // 528 triangles
     test::add_instance(scene, once,
                        Transform::trs({-3, 0, 0}, Quat{0, 0.38f, 0, 0.92f}, {1, 2, -1}));
     const uint32_t small = test::add_cube_object(scene, -1);  // 12 triangles, twice
@@ -188,7 +188,9 @@ TEST(EmbreeAccel, FlattenedObjectsGiveTheHitsOfInstances) {
     test::add_instance(scene, moving, Transform::translate({0, 0, 3}));
     scene.instances.back().motion = {Transform::translate({0, 0, 3}),
                                      Transform::translate({0.5f, 0, 3})};
-    const EmbreeAccel flat(scene);
+    EmbreeBuildOptions options;
+    options.flatten_triangles = 1000;
+    const EmbreeAccel flat(scene, options);
     EmbreeBuildOptions two_levels;
     two_levels.flatten = false;
     const EmbreeAccel nested(scene, two_levels);
