@@ -155,8 +155,16 @@ const CornellRays& cornell_rays() {
     return rays;
 }
 
+// Argument 1: Embree's default build (the Cornell box flattened into one level); 0: two
+// levels (EmbreeBuildOptions::flatten off), each glTF node an instance.
+EmbreeBuildOptions embree_levels(int64_t flatten) {
+    EmbreeBuildOptions o;
+    o.flatten = flatten != 0;
+    return o;
+}
+
 void BM_CameraRays1(benchmark::State& state) {
-    const EmbreeAccel accel(scene_for(Which::Cornell));
+    const EmbreeAccel accel(scene_for(Which::Cornell), embree_levels(state.range(0)));
     const std::vector<Ray>& rays = cornell_rays().camera;
     size_t i = 0, hits = 0;
     for (auto _ : state) {
@@ -166,7 +174,7 @@ void BM_CameraRays1(benchmark::State& state) {
     benchmark::DoNotOptimize(hits);
     state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(BM_CameraRays1);
+BENCHMARK(BM_CameraRays1)->Arg(1)->Arg(0);
 
 // Items are rays, so the figure compares with BM_CameraRays1 directly.
 void BM_CameraRays8(benchmark::State& state) {
@@ -185,7 +193,7 @@ void BM_CameraRays8(benchmark::State& state) {
 BENCHMARK(BM_CameraRays8);
 
 void BM_ShadowRays1(benchmark::State& state) {
-    const EmbreeAccel accel(scene_for(Which::Cornell));
+    const EmbreeAccel accel(scene_for(Which::Cornell), embree_levels(state.range(0)));
     const std::vector<Ray>& rays = cornell_rays().shadow;
     size_t i = 0, blocked = 0;
     for (auto _ : state) {
@@ -195,7 +203,7 @@ void BM_ShadowRays1(benchmark::State& state) {
     benchmark::DoNotOptimize(blocked);
     state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(BM_ShadowRays1);
+BENCHMARK(BM_ShadowRays1)->Arg(1)->Arg(0);
 
 // rtcOccluded1M over batches of state.range(0) rays, coherent (1) or incoherent (0) hint.
 void BM_ShadowRaysStream(benchmark::State& state) {

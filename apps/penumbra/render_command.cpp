@@ -263,7 +263,6 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
                          ckpt;
 
     if (!o.quiet) {
-        const AccelStats as = setup->accel->stats();
         std::fprintf(stderr,
                      "%s -> %s%s%s%s\n"
                      "  %dx%d, %u spp%s, integrator %s, camera '%s'\n"
@@ -284,8 +283,8 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
                                          : "",
                      o.integrator.c_str(), cam_desc.name.c_str(),
                      format_duration(setup->load_seconds).c_str(),
-                     format_duration(setup->build_seconds).c_str(), as.object_scenes,
-                     as.instances, format_duration(stats.seconds).c_str(),
+                     format_duration(setup->build_seconds).c_str(), setup->scene.objects.size(),
+                     setup->scene.instances.size(), format_duration(stats.seconds).c_str(),
                      format_duration(write_s).c_str(),
                      stats.seconds > 0 ? stats.rays / stats.seconds / 1e6 : 0.0,
                      static_cast<unsigned long long>(stats.rays),

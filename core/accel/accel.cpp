@@ -1,6 +1,6 @@
 #include "core/accel/accel.h"
 
-#include <cmath>
+#include <atomic>
 #include <stdexcept>
 
 #include "core/accel/bvh_accel.h"
@@ -9,11 +9,9 @@
 
 namespace penumbra {
 
-bool is_traceable(const Ray& ray) {
-    constexpr float kLarge = 1.844e18f;
-    for (int a = 0; a < 3; ++a)  // written so that NaN fails every test
-        if (!(std::abs(ray.o[a]) <= kLarge && std::abs(ray.d[a]) <= kLarge)) return false;
-    return (ray.d.x != 0 || ray.d.y != 0 || ray.d.z != 0) && ray.tmin <= ray.tmax;
+Accel::Accel() {
+    static std::atomic<uint64_t> next_serial{1};  // 0: the empty cache
+    m_serial = next_serial.fetch_add(1, std::memory_order_relaxed);
 }
 
 uint64_t Accel::rays_traced() const {

@@ -2,6 +2,7 @@
 // our own BVH and grid) return the same Hit, so any result can be cross-checked.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -26,21 +27,31 @@ struct AccelStats {
 // Rays every accelerator answers with a miss without tracing them: a NaN or infinite
 // component, a coordinate beyond 1.844e18 (Embree's FLT_LARGE: its ray.valid() assertion
 // aborts the process on such rays), a zero direction, or a NaN or empty [tmin, tmax].
-bool is_traceable(const Ray& ray);
+// Inline and without branches (& not &&): it runs before every query.
+inline bool is_traceable(const Ray& ray) {
+    constexpr float kLarge = 1.844e18f;
+    // Written so that NaN fails every comparison.
+    const bool finite = (std::abs(ray.o.x) <= kLarge) & (std::abs(ray.o.y) <= kLarge) &
+                        (std::abs(ray.o.z) <= kLarge) & (std::abs(ray.d.x) <= kLarge) &
+                        (std::abs(ray.d.y) <= kLarge) & (std::abs(ray.d.z) <= kLarge);
+    const bool nonzero = (ray.d.x != 0) | (ray.d.y != 0) | (ray.d.z != 0);
+    return finite & nonzero & (ray.tmin <= ray.tmax);
+}
 
 class Accel {
 public:
+    Accel();
     virtual ~Accel() = default;
     // Closest hit along ray with tmin <= t <= tmax (Embree's interval in its robust
     // mode) at ray.time. Untraceable rays (is_traceable) miss.
     std::optional<Hit> intersect(const Ray& ray) const {
-        ++m_rays.local();
+        count_ray();
         if (!is_traceable(ray)) return std::nullopt;
         return do_intersect(ray);
     }
     // Any hit with tmin <= t <= tmax: for shadow rays.
     bool occluded(const Ray& ray) const {
-        ++m_rays.local();
+        count_ray();
         return is_traceable(ray) && do_occluded(ray);
     }
     // Eight closest-hit queries at once, hits[i] as intersect(rays[i]) gives it, counted
@@ -59,6 +70,21 @@ protected:
     virtual bool do_occluded(const Ray& ray) const = 0;
 
 private:
+    // This thread's counter of this accelerator, remembered in a plain thread_local so
+    // that a ray costs a compare and an increment, not a TBB thread-local lookup (a hash
+    // of the thread id). The key is a serial number, never reused, so a cached slot of
+    // a destroyed accelerator is never written.
+    struct CounterCache {
+        uint64_t serial = 0;
+        uint64_t* slot = nullptr;
+    };
+    void count_ray() const {
+        static thread_local CounterCache cache;
+        if (cache.serial != m_serial) cache = {m_serial, &m_rays.local()};
+        ++*cache.slot;
+    }
+
+    uint64_t m_serial;
     mutable tbb::enumerable_thread_specific<uint64_t> m_rays{0};
 };
 

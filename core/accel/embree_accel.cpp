@@ -83,16 +83,39 @@ struct EmbreeAccel::Impl {
     std::atomic<int64_t> memory{0};  // bytes Embree has allocated, from its monitor
     RTCDevice device = nullptr;
     RTCScene top = nullptr;
-    std::vector<RTCScene> object_scenes;
+    std::vector<RTCScene> object_scenes;  // per object; null where every placement is flat
     // geomID within an object's scene -> Scene::meshes index.
     std::vector<std::vector<uint32_t>> mesh_ids;
     // instID -> object index.
     std::vector<uint32_t> instance_object;
+    // Top-level geomIDs from instance_count on are flattened meshes: (instance, mesh).
+    uint32_t instance_count = 0;
+    std::vector<std::pair<uint32_t, uint32_t>> flat_ids;
 
     void throw_if_error(const char* what) {
         std::lock_guard<std::mutex> lock(errors.mutex);
         if (!errors.first.empty())
             throw InternalError(std::string("embree: ") + what + ": " + errors.first);
+    }
+
+    // The Hit of an Embree hit record: a flattened mesh's u, v on its world-space copy
+    // parametrise the object-space triangle as they would through an instance.
+    Hit hit(unsigned inst_id, unsigned geom_id, unsigned prim, float u, float v,
+            float t) const {
+        Hit h;
+        h.t = t;
+        if (inst_id == RTC_INVALID_GEOMETRY_ID) {
+            const auto& ids = flat_ids[geom_id - instance_count];
+            h.instance = ids.first;
+            h.mesh = ids.second;
+        } else {
+            h.instance = inst_id;
+            h.mesh = mesh_ids[instance_object[inst_id]][geom_id];
+        }
+        h.prim = prim;
+        h.b1 = u;
+        h.b2 = v;
+        return h;
     }
 
     ~Impl() {
@@ -102,6 +125,41 @@ struct EmbreeAccel::Impl {
         if (device) rtcReleaseDevice(device);
     }
 };
+
+namespace {
+
+// Which instances are traced as world-space triangles (EmbreeBuildOptions::flatten):
+// those of rigid objects whose every placement is static, small in all.
+std::vector<bool> flattened_instances(const Scene& scene, const EmbreeBuildOptions& options) {
+    std::vector<bool> flat(scene.instances.size(), false);
+    if (!options.flatten) return flat;
+    std::vector<size_t> placements(scene.objects.size(), 0);
+    std::vector<bool> rigid(scene.objects.size(), true);
+    for (const Instance& inst : scene.instances) {
+        ++placements[inst.object];
+        if (!inst.motion.empty()) rigid[inst.object] = false;
+    }
+    std::vector<bool> flat_object(scene.objects.size(), false);
+    size_t budget = options.flatten_budget;
+    for (size_t oi = 0; oi < scene.objects.size(); ++oi) {
+        size_t triangles = 0;
+        for (uint32_t mi : scene.objects[oi].meshes) {
+            if (!scene.meshes[mi].motion_positions.empty()) rigid[oi] = false;
+            triangles += scene.meshes[mi].triangle_count();
+        }
+        const size_t copies = triangles * placements[oi];
+        if (rigid[oi] && placements[oi] > 0 && copies <= options.flatten_triangles &&
+            copies <= budget) {
+            flat_object[oi] = true;
+            budget -= copies;
+        }
+    }
+    for (size_t ii = 0; ii < scene.instances.size(); ++ii)
+        flat[ii] = flat_object[scene.instances[ii].object];
+    return flat;
+}
+
+}  // namespace
 
 EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
     : m_impl(std::make_unique<Impl>()) {
@@ -117,10 +175,57 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
     rtcSetDeviceErrorFunction(im.device, error_callback, &im.errors);
     rtcSetDeviceMemoryMonitorFunction(im.device, memory_callback, &im.memory);
 
-    // Bottom level: each Object once, whatever the number of instances.
-    im.object_scenes.reserve(scene.objects.size());
+    const std::vector<bool> flat = flattened_instances(scene, options);
+    std::vector<bool> needs_scene(scene.objects.size(), false);
+    for (size_t ii = 0; ii < scene.instances.size(); ++ii)
+        if (!flat[ii]) needs_scene[scene.instances[ii].object] = true;
+
+    // A triangle geometry of mesh, placed by to_world (nullptr: object space).
+    auto new_triangles = [&](const TriangleMesh& mesh, const Transform* to_world) {
+        RTCGeometry g = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        // The scene's arrays are shared, not copied, where they allow it: Embree reads
+        // the last vertex with a 16-byte load (rtcSetSharedGeometryBuffer(3)), so a
+        // vertex array needs a spare element of capacity (io/ reserves one). Other
+        // arrays are copied into Embree's own, padded buffers.
+        auto set_vertices = [&](unsigned slot, const std::vector<Vec3>& p) {
+            if (!to_world && p.capacity() > p.size()) {
+                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, slot, RTC_FORMAT_FLOAT3,
+                                           p.data(), 0, sizeof(Vec3), p.size());
+                return;
+            }
+            auto* v = static_cast<Vec3*>(rtcSetNewGeometryBuffer(
+                g, RTC_BUFFER_TYPE_VERTEX, slot, RTC_FORMAT_FLOAT3, sizeof(Vec3), p.size()));
+            if (to_world) {
+                // Each vertex is off the exact image by Transform::point's rounding, the
+                // error make_surface_point already bounds for its xf.point(q).
+                for (size_t i = 0; i < p.size(); ++i) v[i] = to_world->point(p[i]);
+            } else {
+                std::memcpy(static_cast<void*>(v), p.data(), p.size() * sizeof(Vec3));
+            }
+            m_copied_bytes += p.size() * sizeof(Vec3);
+        };
+        if (mesh.motion_positions.empty()) {
+            set_vertices(0, mesh.positions);
+        } else {
+            // Deformation: one vertex buffer per time step; Embree interpolates
+            // linearly between them (motion.h's position_at).
+            const auto steps = static_cast<unsigned>(mesh.motion_positions.size());
+            rtcSetGeometryTimeStepCount(g, steps);
+            for (unsigned k = 0; k < steps; ++k) set_vertices(k, mesh.motion_positions[k]);
+        }
+        // Index loads need no padding.
+        rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                   mesh.indices.data(), 0, 3 * sizeof(uint32_t),
+                                   mesh.triangle_count());
+        rtcCommitGeometry(g);
+        return g;
+    };
+
+    // Bottom level: each instanced Object once, whatever the number of instances.
+    im.object_scenes.assign(scene.objects.size(), nullptr);
     im.mesh_ids.resize(scene.objects.size());
     for (size_t oi = 0; oi < scene.objects.size(); ++oi) {
+        if (!needs_scene[oi]) continue;
         RTCScene s = rtcNewScene(im.device);
         // The default (Moeller-Trumbore) triangle test is not watertight: rays from inside
         // a closed 64k-triangle sphere, aimed at its vertices and edges, missed 521 times
@@ -128,39 +233,9 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
         // watertight Pluecker test and conservative traversal.
         rtcSetSceneFlags(s, RTCSceneFlags(flags));
         rtcSetSceneBuildQuality(s, quality);
-        im.object_scenes.push_back(s);
+        im.object_scenes[oi] = s;
         for (uint32_t mesh_index : scene.objects[oi].meshes) {
-            const TriangleMesh& mesh = scene.meshes[mesh_index];
-            RTCGeometry g = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-            // The scene's arrays are shared, not copied, where they allow it: Embree reads
-            // the last vertex with a 16-byte load (rtcSetSharedGeometryBuffer(3)), so a
-            // vertex array needs a spare element of capacity (io/ reserves one). Other
-            // arrays are copied into Embree's own, padded buffers.
-            auto set_vertices = [&](unsigned slot, const std::vector<Vec3>& p) {
-                if (p.capacity() > p.size()) {
-                    rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, slot, RTC_FORMAT_FLOAT3,
-                                               p.data(), 0, sizeof(Vec3), p.size());
-                    return;
-                }
-                auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-                    g, RTC_BUFFER_TYPE_VERTEX, slot, RTC_FORMAT_FLOAT3, sizeof(Vec3), p.size()));
-                std::memcpy(v, p.data(), p.size() * sizeof(Vec3));
-                m_copied_bytes += p.size() * sizeof(Vec3);
-            };
-            if (mesh.motion_positions.empty()) {
-                set_vertices(0, mesh.positions);
-            } else {
-                // Deformation: one vertex buffer per time step; Embree interpolates
-                // linearly between them (motion.h's position_at).
-                const auto steps = static_cast<unsigned>(mesh.motion_positions.size());
-                rtcSetGeometryTimeStepCount(g, steps);
-                for (unsigned k = 0; k < steps; ++k) set_vertices(k, mesh.motion_positions[k]);
-            }
-            // Index loads need no padding.
-            rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                       mesh.indices.data(), 0, 3 * sizeof(uint32_t),
-                                       mesh.triangle_count());
-            rtcCommitGeometry(g);
+            RTCGeometry g = new_triangles(scene.meshes[mesh_index], nullptr);
             const uint32_t geom_id = rtcAttachGeometry(s, g);
             rtcReleaseGeometry(g);
             if (im.mesh_ids[oi].size() <= geom_id) im.mesh_ids[oi].resize(geom_id + 1);
@@ -170,12 +245,29 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
         im.throw_if_error("building an object scene");
     }
 
-    // Top level: one instance per node that places an object.
+    // Top level: one instance per other node that places an object (geomID = instance
+    // index, Hit::instance), then the flattened meshes.
     im.top = rtcNewScene(im.device);
-    rtcSetSceneFlags(im.top, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneFlags(im.top, RTCSceneFlags(flags));
+    rtcSetSceneBuildQuality(im.top, quality);
+    im.instance_count = static_cast<uint32_t>(scene.instances.size());
     im.instance_object.resize(scene.instances.size());
     for (size_t ii = 0; ii < scene.instances.size(); ++ii) {
         const Instance& inst = scene.instances[ii];
+        im.instance_object[ii] = inst.object;
+        if (flat[ii]) {
+            const bool identity = inst.to_world.matrix().is_identity();
+            for (uint32_t mesh_index : scene.objects[inst.object].meshes) {
+                RTCGeometry g =
+                    new_triangles(scene.meshes[mesh_index], identity ? nullptr : &inst.to_world);
+                rtcAttachGeometryByID(
+                    im.top, g, im.instance_count + static_cast<unsigned>(im.flat_ids.size()));
+                rtcReleaseGeometry(g);
+                im.flat_ids.emplace_back(static_cast<uint32_t>(ii), mesh_index);
+            }
+            ++m_flattened;
+            continue;
+        }
         RTCGeometry g = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_INSTANCE);
         rtcSetGeometryInstancedScene(g, im.object_scenes[inst.object]);
         if (inst.motion.empty()) {
@@ -190,7 +282,6 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
         rtcCommitGeometry(g);
         rtcAttachGeometryByID(im.top, g, static_cast<unsigned>(ii));
         rtcReleaseGeometry(g);
-        im.instance_object[ii] = inst.object;
     }
     rtcCommitScene(im.top);
     im.throw_if_error("building the top-level scene");
@@ -198,8 +289,10 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
     m_stats.name = "embree";
     m_stats.build_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    m_stats.object_scenes = im.object_scenes.size();
-    m_stats.instances = scene.instances.size();
+    m_stats.object_scenes = static_cast<size_t>(
+        std::count_if(im.object_scenes.begin(), im.object_scenes.end(),
+                      [](RTCScene s) { return s != nullptr; }));
+    m_stats.instances = scene.instances.size() - m_flattened;
     m_stats.memory_bytes = static_cast<size_t>(std::max<int64_t>(0, im.memory.load()));
 }
 
@@ -233,14 +326,8 @@ std::optional<Hit> EmbreeAccel::do_intersect(const Ray& ray) const {
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(m_impl->top, &ctx, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    Hit h;
-    h.t = rh.ray.tfar;
-    h.instance = rh.hit.instID[0];
-    h.mesh = m_impl->mesh_ids[m_impl->instance_object[h.instance]][rh.hit.geomID];
-    h.prim = rh.hit.primID;
-    h.b1 = rh.hit.u;
-    h.b2 = rh.hit.v;
-    return h;
+    return m_impl->hit(rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v,
+                       rh.ray.tfar);
 }
 
 bool EmbreeAccel::do_occluded(const Ray& ray) const {
@@ -285,14 +372,8 @@ void EmbreeAccel::intersect8(const Ray (&rays)[8], std::optional<Hit> (&hits)[8]
             hits[i].reset();
             continue;
         }
-        Hit h;
-        h.t = rh.ray.tfar[i];
-        h.instance = rh.hit.instID[0][i];
-        h.mesh = m_impl->mesh_ids[m_impl->instance_object[h.instance]][rh.hit.geomID[i]];
-        h.prim = rh.hit.primID[i];
-        h.b1 = rh.hit.u[i];
-        h.b2 = rh.hit.v[i];
-        hits[i] = h;
+        hits[i] = m_impl->hit(rh.hit.instID[0][i], rh.hit.geomID[i], rh.hit.primID[i],
+                              rh.hit.u[i], rh.hit.v[i], rh.ray.tfar[i]);
     }
 }
 

@@ -1,8 +1,9 @@
-// Embree 3 traversal: one Embree scene per Object (each TriangleMesh a geometry), and a
-// top-level scene with one instance geometry per Instance. Embree types stay in the .cpp.
-// Moving instances and deforming meshes get Embree time steps; static ones none. Embree
-// reads the scene's index and (where padded) vertex arrays in place: the Scene must
-// outlive the accelerator and keep its meshes unchanged.
+// Embree 3 traversal: a top-level scene holding the triangles of small static objects in
+// world space (instancing does not pay for them), and one instance geometry per other
+// Instance, of a per-Object scene. Embree types stay in the .cpp. Moving instances
+// and deforming meshes get Embree time steps; static ones none. Embree reads the scene's
+// index and (where padded) vertex arrays in place: the Scene must outlive the accelerator
+// and keep its meshes unchanged.
 #pragma once
 
 #include <memory>
@@ -18,6 +19,16 @@ struct EmbreeBuildOptions {
     enum class Quality { Low, Medium, High };
     Quality quality = Quality::Medium;
     bool compact = false;  // leaves index the vertex arrays: less memory, slower rays
+    // One level where instancing buys nothing: a rigid Object with only static
+    // placements goes into the top-level scene as world-space triangles when its
+    // triangles times its placements are at most flatten_triangles (and the sum of such
+    // copies stays within flatten_budget), so that a ray traverses one BVH as in
+    // Embree's tutorials. Larger objects keep their own BVH even when placed once: one
+    // top-level build over all of them doubled build CPU and added 24% to the peak
+    // memory of a 2M-triangle scene (docs/performance.md). false: two levels everywhere.
+    bool flatten = true;
+    size_t flatten_triangles = 65536;
+    size_t flatten_budget = size_t(1) << 20;
 };
 
 class EmbreeAccel final : public Accel {
@@ -26,8 +37,12 @@ public:
     ~EmbreeAccel() override;
     AccelStats stats() const override { return m_stats; }
     // Vertex bytes copied out of the Scene: positions without a spare element of
-    // capacity (0 when Embree reads every array in place).
+    // capacity, and the world-space copies of flattened objects (0 when Embree reads
+    // every array in place).
     size_t copied_bytes() const { return m_copied_bytes; }
+    // Scene instances traced as world-space triangles of the top level
+    // (EmbreeBuildOptions::flatten); stats().instances counts the others.
+    size_t flattened() const { return m_flattened; }
     // Eight closest-hit queries as one rtcIntersect8 packet (hits[i] empty: a miss or an
     // untraceable ray); for coherent batches such as a 4 x 2 block of camera rays.
     // bench/accel_bench.cpp measures it against intersect().
@@ -44,6 +59,7 @@ private:
     std::unique_ptr<Impl> m_impl;
     AccelStats m_stats;
     size_t m_copied_bytes = 0;
+    size_t m_flattened = 0;
 };
 
 // The transform Embree itself computes at time u for an instance with these time steps

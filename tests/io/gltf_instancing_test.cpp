@@ -47,8 +47,11 @@ TEST(GltfInstancing, EachInstanceGetsItsTransformTimesTheNodes) {
         EXPECT_NEAR(p.z, expected[i].z, 1e-5f);
     }
     EXPECT_TRUE(s.instances[2].to_world.swaps_handedness());
-    // Embree builds the triangle once and hits every instance.
-    const EmbreeAccel accel(s);
+    // Embree builds the triangle once and hits every instance (with two levels: else
+    // so small an object is flattened, core/accel/embree_accel.h).
+    EmbreeBuildOptions two_levels;
+    two_levels.flatten = false;
+    const EmbreeAccel accel(s, two_levels);
     EXPECT_EQ(accel.stats().object_scenes, 1u);
     for (int i = 0; i < 3; ++i) {
         Ray r;

@@ -6,8 +6,10 @@
 #include <limits>
 #include <vector>
 
+#include "core/accel/accel_check.h"
 #include "core/sampling/rng.h"
 #include "core/sampling/warp.h"
+#include "support/accel_agreement.h"
 #include "support/scene_builder.h"
 
 namespace penumbra {
@@ -19,7 +21,9 @@ TEST(EmbreeAccel, SharedMeshIsBuiltOnceAndBothInstancesAreHit) {
     const uint32_t cube = test::add_cube_object(scene, mat);
     test::add_instance(scene, cube, Transform::translate({-2, 0, 0}));
     test::add_instance(scene, cube, Transform::translate({2, 0, 0}));
-    EmbreeAccel accel(scene);
+    EmbreeBuildOptions two_levels;  // else the 24 triangles are flattened
+    two_levels.flatten = false;
+    EmbreeAccel accel(scene, two_levels);
     EXPECT_EQ(accel.stats().object_scenes, 1u);
     EXPECT_EQ(accel.stats().instances, 2u);
 
@@ -161,6 +165,54 @@ TEST(EmbreeAccel, PacketsAndStreamsAgreeWithSingleRays) {
     EXPECT_GT(hits, 50);
     EXPECT_LT(hits, int(rays.size()) - 50);
     EXPECT_GT(blocked, 100);
+}
+
+// Objects that instancing does not pay for go into the top level as world-space
+// triangles (EmbreeBuildOptions::flatten): small in all (here at most 1000 triangles),
+// however transformed; larger objects and moving instances stay instanced. The Hit is the one
+// through instances: same instance, mesh and triangle, t and u, v within the
+// cross-check's tolerances (accel_check.h), on every kind of check ray.
+TEST(EmbreeAccel, FlattenedObjectsGiveTheHitsOfInstances) {
+    Scene scene;
+    const uint32_t once = test::add_sphere_object(scene, -1, 12, 24);  // 528 triangles
+    test::add_instance(scene, once,
+                       Transform::trs({-3, 0, 0}, Quat{0, 0.38f, 0, 0.92f}, {1, 2, -1}));
+    const uint32_t small = test::add_cube_object(scene, -1);  // 12 triangles, twice
+    test::add_instance(scene, small, Transform::translate({0, 2, 0}));
+    test::add_instance(scene, small,
+                       Transform::trs({0, -2, 0}, Quat{0.38f, 0, 0, 0.92f}, {0.5f, 1, 1}));
+    const uint32_t big = test::add_sphere_object(scene, -1);  // 2 x 2208 triangles
+    test::add_instance(scene, big, Transform::translate({3, 1.5f, 0}));
+    test::add_instance(scene, big, Transform::scale({1, 1, -1}) * Transform::translate({3, -1.5f, 0}));
+    const uint32_t moving = test::add_cube_object(scene, -1);
+    test::add_instance(scene, moving, Transform::translate({0, 0, 3}));
+    scene.instances.back().motion = {Transform::translate({0, 0, 3}),
+                                     Transform::translate({0.5f, 0, 3})};
+    EmbreeBuildOptions options;
+    options.flatten_triangles = 1000;
+    const EmbreeAccel flat(scene, options);
+    EmbreeBuildOptions two_levels;
+    two_levels.flatten = false;
+    const EmbreeAccel nested(scene, two_levels);
+    EXPECT_EQ(flat.flattened(), 3u);
+    EXPECT_EQ(flat.stats().instances, 3u);
+    EXPECT_EQ(flat.stats().object_scenes, 2u);
+    EXPECT_EQ(nested.flattened(), 0u);
+    EXPECT_EQ(nested.stats().object_scenes, 4u);
+
+    const std::vector<CheckRay> rays = test::agreement_rays(scene, nested, 20000, 5000);
+    const TraceResults flat_hits = trace_rays(flat, rays);
+    const AgreementReport rep = compare_results(scene, rays, trace_rays(nested, rays), flat_hits,
+                                                "two levels", "flattened");
+    std::string examples;
+    for (const std::string& e : rep.examples) examples += "\n  " + e;
+    EXPECT_EQ(rep.count(Disagreement::Other), 0u) << examples;
+    EXPECT_TRUE(rep.passes(1e-4)) << rep.disagreements() << " of " << rep.rays << examples;
+    // Not vacuous: the rays reach every instance through both paths.
+    std::vector<int> reached(scene.instances.size(), 0);
+    for (const auto& h : flat_hits.hits)
+        if (h) ++reached[h->instance];
+    for (size_t i = 0; i < reached.size(); ++i) EXPECT_GT(reached[i], 100) << i;
 }
 
 }  // namespace
