@@ -98,7 +98,8 @@ SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& h
     const Vec3 e1 = p1 - p0, e2 = p2 - p0;
     // Normals transform with the inverse transpose: right under non-uniform scale, and
     // under mirroring it keeps the normal on the side the (flipped) winding implies.
-    Vec3 ng = xf.normal(cross(e1, e2));
+    const Vec3 face = cross(e1, e2);
+    Vec3 ng = xf.normal(face);
     const float ng_len = length(ng);
     ng = ng_len > 0 ? ng / ng_len : -normalize(ray.d);
     sp.ng = ng;
@@ -110,10 +111,19 @@ SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& h
         const Vec3 n0 = bends ? normal_at(mesh, i0, ray.time) : mesh.normals[i0],
                    n1 = bends ? normal_at(mesh, i1, ray.time) : mesh.normals[i1],
                    n2 = bends ? normal_at(mesh, i2, ray.time) : mesh.normals[i2];
-        const Vec3 v[3] = {p0, p1, p2}, vn[3] = {n0, n1, n2};
-        const float b[3] = {b0, b1, b2};
-        sp.p_smooth = xf.point(smooth_surface_point(p0 * b0 + p1 * b1 + p2 * b2, v, vn, b));
-        const Vec3 n = n0 * b0 + n1 * b1 + n2 * b2;
+        // A flat-shaded facet (three equal normals along the face normal, as glTF
+        // exporters write hard edges) has every vertex plane through its own plane:
+        // the lift would only add rounding noise, and the interpolation gives n0 back.
+        const float norms2 = length_squared(n0) * length_squared(face);
+        const bool flat = n0 == n1 && n0 == n2 && std::isfinite(norms2) &&
+                          length_squared(cross(n0, face)) <= 1e-12f * norms2;
+        Vec3 n = n0;
+        if (!flat) {
+            const Vec3 v[3] = {p0, p1, p2}, vn[3] = {n0, n1, n2};
+            const float b[3] = {b0, b1, b2};
+            sp.p_smooth = xf.point(smooth_surface_point(q, v, vn, b));
+            n = n0 * b0 + n1 * b1 + n2 * b2;
+        }
         const Vec3 nw = xf.normal(n);
         const float len = length(nw);
         if (len > 0 && std::isfinite(len)) ns = nw / len;
