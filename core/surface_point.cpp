@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 
+#include "core/math/next_float.h"
 #include "core/scene/motion.h"
 
 namespace penumbra {
@@ -23,6 +24,12 @@ Vec3 abs(Vec3 v) { return {std::abs(v.x), std::abs(v.y), std::abs(v.z)}; }
 Vec3 point_error(const Transform& xf, Vec3 q, Vec3 q_err) {
     const Mat4& m = xf.matrix();
     float e[3];
+    if (xf.is_translation_only()) {
+        // The general sums below with their exact 0 and 1 terms dropped: the same values.
+        for (int r = 0; r < 3; ++r)
+            e[r] = (gamma(3) + 1) * q_err[r] + gamma(3) * (std::abs(q[r]) + std::abs(m(r, 3)));
+        return {e[0], e[1], e[2]};
+    }
     for (int r = 0; r < 3; ++r) {
         const float carried = std::abs(m(r, 0)) * q_err.x + std::abs(m(r, 1)) * q_err.y +
                               std::abs(m(r, 2)) * q_err.z;
@@ -41,6 +48,7 @@ void set_texture_footprint(const TriangleMesh& mesh, const Transform& xf, const 
                            Vec3 e1, Vec3 e2, SurfacePoint& sp) {
     const float dlen = length(ray.d);
     sp.cone_width = ray.cone.width_at(sp.t * dlen);
+    if (mesh.uv0.empty() && mesh.uv1.empty()) return;  // no UV set to give a width in
     const float world_area2 = length(cross(xf.vector(e1), xf.vector(e2)));
     if (!(world_area2 > 0) || !(dlen > 0)) return;
     const float cos = std::max(std::abs(dot(sp.ng, ray.d)) / dlen, 1e-4f);
@@ -90,7 +98,8 @@ SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& h
     const Vec3 e1 = p1 - p0, e2 = p2 - p0;
     // Normals transform with the inverse transpose: right under non-uniform scale, and
     // under mirroring it keeps the normal on the side the (flipped) winding implies.
-    Vec3 ng = xf.normal(cross(e1, e2));
+    const Vec3 face = cross(e1, e2);
+    Vec3 ng = xf.normal(face);
     const float ng_len = length(ng);
     ng = ng_len > 0 ? ng / ng_len : -normalize(ray.d);
     sp.ng = ng;
@@ -102,10 +111,19 @@ SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& h
         const Vec3 n0 = bends ? normal_at(mesh, i0, ray.time) : mesh.normals[i0],
                    n1 = bends ? normal_at(mesh, i1, ray.time) : mesh.normals[i1],
                    n2 = bends ? normal_at(mesh, i2, ray.time) : mesh.normals[i2];
-        const Vec3 v[3] = {p0, p1, p2}, vn[3] = {n0, n1, n2};
-        const float b[3] = {b0, b1, b2};
-        sp.p_smooth = xf.point(smooth_surface_point(p0 * b0 + p1 * b1 + p2 * b2, v, vn, b));
-        const Vec3 n = n0 * b0 + n1 * b1 + n2 * b2;
+        // A flat-shaded facet (three equal normals along the face normal, as glTF
+        // exporters write hard edges) has every vertex plane through its own plane:
+        // the lift would only add rounding noise, and the interpolation gives n0 back.
+        const float norms2 = length_squared(n0) * length_squared(face);
+        const bool flat = n0 == n1 && n0 == n2 && std::isfinite(norms2) &&
+                          length_squared(cross(n0, face)) <= 1e-12f * norms2;
+        Vec3 n = n0;
+        if (!flat) {
+            const Vec3 v[3] = {p0, p1, p2}, vn[3] = {n0, n1, n2};
+            const float b[3] = {b0, b1, b2};
+            sp.p_smooth = xf.point(smooth_surface_point(q, v, vn, b));
+            n = n0 * b0 + n1 * b1 + n2 * b2;
+        }
         const Vec3 nw = xf.normal(n);
         const float len = length(nw);
         if (len > 0 && std::isfinite(len)) ns = nw / len;
@@ -170,10 +188,9 @@ Vec3 offset_ray_origin(Vec3 p, Vec3 p_error, Vec3 n, Vec3 w) {
     const Vec3 side = dot(w, n) < 0 ? -n : n;
     Vec3 po = p + side * d;
     // The addition rounds too: step each coordinate one float further along the normal.
-    const float inf = std::numeric_limits<float>::infinity();
     for (int i = 0; i < 3; ++i) {
-        if (side[i] > 0) po[i] = std::nextafter(po[i], inf);
-        else if (side[i] < 0) po[i] = std::nextafter(po[i], -inf);
+        if (side[i] > 0) po[i] = next_float_up(po[i]);
+        else if (side[i] < 0) po[i] = next_float_down(po[i]);
     }
     return po;
 }

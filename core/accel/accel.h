@@ -65,7 +65,12 @@ public:
     uint64_t rays_traced() const;
 
 protected:
-    void count_rays(uint64_t n) const { m_rays.local() += n; }
+    // Adds n rays to this thread's count (for queries that bypass intersect/occluded).
+    void count_rays(uint64_t n) const {
+        static thread_local CounterCache cache;
+        if (cache.serial != m_serial) cache = {m_serial, &m_rays.local()};
+        *cache.slot += n;
+    }
     virtual std::optional<Hit> do_intersect(const Ray& ray) const = 0;
     virtual bool do_occluded(const Ray& ray) const = 0;
 
@@ -78,11 +83,7 @@ private:
         uint64_t serial = 0;
         uint64_t* slot = nullptr;
     };
-    void count_ray() const {
-        static thread_local CounterCache cache;
-        if (cache.serial != m_serial) cache = {m_serial, &m_rays.local()};
-        ++*cache.slot;
-    }
+    void count_ray() const { count_rays(1); }
 
     uint64_t m_serial;
     mutable tbb::enumerable_thread_specific<uint64_t> m_rays{0};

@@ -94,6 +94,18 @@ Mat4 operator*(const Mat4& a, const Mat4& b) {
 
 Transform::Transform(const Mat4& m) : m_m(m) {
     if (!m.inverse(&m_inv)) throw std::invalid_argument("singular transform matrix");
+    classify();
+}
+
+void Transform::classify() {
+    auto translation = [](const Mat4& a) {
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 3; ++j)
+                if (a.m[i][j] != (i == j ? 1.0f : 0.0f)) return false;
+        return a.m[3][3] == 1.0f;
+    };
+    m_translation_only = translation(m_m) && translation(m_inv);
+    m_swaps_handedness = m_m.determinant3x3() < 0;
 }
 
 Transform Transform::translate(Vec3 t) {
@@ -154,26 +166,12 @@ Transform Transform::look_at(Vec3 eye, Vec3 target, Vec3 up) {
     return Transform(m);
 }
 
-Vec3 Transform::point(Vec3 p) const {
+Vec3 Transform::general_point(Vec3 p) const {
     const auto& m = m_m.m;
     Vec3 r;
     for (int i = 0; i < 3; ++i) r[i] = m[i][0] * p.x + m[i][1] * p.y + m[i][2] * p.z + m[i][3];
     const float w = m[3][0] * p.x + m[3][1] * p.y + m[3][2] * p.z + m[3][3];
     return w == 1.0f ? r : r / w;
-}
-
-Vec3 Transform::vector(Vec3 v) const {
-    const auto& m = m_m.m;
-    Vec3 r;
-    for (int i = 0; i < 3; ++i) r[i] = m[i][0] * v.x + m[i][1] * v.y + m[i][2] * v.z;
-    return r;
-}
-
-Vec3 Transform::normal(Vec3 n) const {
-    const auto& mi = m_inv.m;  // (M^-1)^T n: use the columns of the inverse
-    Vec3 r;
-    for (int i = 0; i < 3; ++i) r[i] = mi[0][i] * n.x + mi[1][i] * n.y + mi[2][i] * n.z;
-    return r;
 }
 
 Bounds3 Transform::bounds(const Bounds3& b) const {

@@ -37,7 +37,7 @@ public:
     Transform() : m_m(Mat4::identity()), m_inv(Mat4::identity()) {}
     // Throws std::invalid_argument if m is singular.
     explicit Transform(const Mat4& m);
-    Transform(const Mat4& m, const Mat4& inv) : m_m(m), m_inv(inv) {}
+    Transform(const Mat4& m, const Mat4& inv) : m_m(m), m_inv(inv) { classify(); }
 
     static Transform translate(Vec3 t);
     static Transform scale(Vec3 s);
@@ -51,18 +51,47 @@ public:
     const Mat4& inverse_matrix() const { return m_inv; }
     Transform inverse() const { return Transform(m_inv, m_m); }
 
-    Vec3 point(Vec3 p) const;
-    Vec3 vector(Vec3 v) const;
+    // Inline, with a shortcut for pure translations (most glTF instances, and every
+    // identity): they are on the path of every hit. The shortcut gives the general
+    // formula's values, whose 0 * x and 1 * x terms are exact in IEEE arithmetic
+    // (except that the sign of a zero coordinate may differ).
+    Vec3 point(Vec3 p) const {
+        if (m_translation_only) return {p.x + m_m.m[0][3], p.y + m_m.m[1][3], p.z + m_m.m[2][3]};
+        return general_point(p);
+    }
+    Vec3 vector(Vec3 v) const {
+        if (m_translation_only) return v;
+        const auto& m = m_m.m;
+        return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
+                m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+                m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
+    }
     // Normals transform by the inverse transpose (correct under non-uniform scale and
     // mirroring); the result is not normalized.
-    Vec3 normal(Vec3 n) const;
+    Vec3 normal(Vec3 n) const {
+        if (m_translation_only) return n;
+        const auto& mi = m_inv.m;  // (M^-1)^T n: use the columns of the inverse
+        return {mi[0][0] * n.x + mi[1][0] * n.y + mi[2][0] * n.z,
+                mi[0][1] * n.x + mi[1][1] * n.y + mi[2][1] * n.z,
+                mi[0][2] * n.x + mi[1][2] * n.y + mi[2][2] * n.z};
+    }
     Bounds3 bounds(const Bounds3& b) const;
     // True when the transform flips handedness (negative determinant): triangle winding
     // and cross-product normals flip with it.
-    bool swaps_handedness() const { return m_m.determinant3x3() < 0; }
+    bool swaps_handedness() const { return m_swaps_handedness; }
+    // True when the matrix and its inverse are translations (identity included): the
+    // linear part is exactly the identity and the last row (0, 0, 0, 1).
+    bool is_translation_only() const { return m_translation_only; }
 
 private:
+    // Sets the flags above from the matrices (every constructor calls it; the matrices
+    // never change afterwards).
+    void classify();
+    Vec3 general_point(Vec3 p) const;
+
     Mat4 m_m, m_inv;
+    bool m_translation_only = true;
+    bool m_swaps_handedness = false;
 };
 
 Transform operator*(const Transform& a, const Transform& b);

@@ -31,6 +31,46 @@ TEST(SmoothSurfacePoint, FlatTriangleKeepsThePoint) {
     EXPECT_EQ(q.z, p.z);
 }
 
+// One triangle in a tilted plane with the given vertex normal at all three vertices,
+// placed by xf; the surface point at barycentrics (0.3, 0.5).
+SurfacePoint point_on_triangle(Vec3 normal, const Transform& xf) {
+    Scene scene;
+    TriangleMesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0.3f, 0}, {0.2f, 0.1f, 1}};
+    mesh.normals = {normal, normal, normal};
+    mesh.indices = {0, 1, 2};
+    scene.meshes.push_back(mesh);
+    scene.objects.push_back({"triangle", {0}, {}});
+    Instance inst;
+    inst.to_world = xf;
+    scene.instances.push_back(inst);
+    Ray ray;
+    ray.d = {0, -1, 0};
+    Hit hit;
+    hit.t = 1;
+    hit.b1 = 0.3f;
+    hit.b2 = 0.5f;
+    return make_surface_point(scene, ray, hit);
+}
+
+TEST(SmoothSurfacePoint, FlatShadedFacetIsNotLiftedAndTiltedNormalsAre) {
+    const Vec3 face = normalize(cross(Vec3(1, 0.3f, 0), Vec3(0.2f, 0.1f, 1)));
+    const float s = std::sqrt(0.5f);
+    for (const Transform& xf : {Transform(), Transform::translate({1, -2, 3}),
+                                Transform::trs({0.5f, 0, 0}, Quat{0, s, 0, s}, {2, 1, 0.5f})}) {
+        // Flat shading: p exactly, and the normal is the face normal.
+        const SurfacePoint flat = point_on_triangle(face, xf);
+        EXPECT_EQ(flat.p_smooth.x, flat.p.x);
+        EXPECT_EQ(flat.p_smooth.y, flat.p.y);
+        EXPECT_EQ(flat.p_smooth.z, flat.p.z);
+        EXPECT_GT(dot(flat.ns, flat.ng), 1 - 1e-6f);
+        // Equal normals that lean off the face normal put vertex planes through the
+        // facet: Hanika's lift still applies.
+        const SurfacePoint tilted = point_on_triangle(normalize(face + Vec3(0.3f, 0, 0)), xf);
+        EXPECT_GT(length(tilted.p_smooth - tilted.p), 1e-3f);
+    }
+}
+
 TEST(SmoothSurfacePoint, ConvexFacetIsLiftedTowardsTheSphere) {
     // A facet of the unit sphere with vertex normals = positions: its centre lies inside
     // the sphere; the lifted point must be further out. The tangent planes lie outside

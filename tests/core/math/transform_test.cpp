@@ -88,6 +88,65 @@ TEST(Transform, BoundsEncloseTransformedCorners) {
     EXPECT_NEAR(r45.hi.x, std::sqrt(2.0f), 1e-5f);
 }
 
+// The general 4x4 formulas, written out from the matrices, for checking the shortcuts.
+Vec3 point_by_matrix(const Transform& xf, Vec3 p) {
+    const Mat4& m = xf.matrix();
+    Vec3 r;
+    for (int i = 0; i < 3; ++i) r[i] = m(i, 0) * p.x + m(i, 1) * p.y + m(i, 2) * p.z + m(i, 3);
+    return r;
+}
+Vec3 normal_by_matrix(const Transform& xf, Vec3 n) {
+    const Mat4& mi = xf.inverse_matrix();
+    Vec3 r;
+    for (int i = 0; i < 3; ++i) r[i] = mi(0, i) * n.x + mi(1, i) * n.y + mi(2, i) * n.z;
+    return r;
+}
+
+TEST(Transform, TranslationsTakeTheShortcutWithTheGeneralFormulasValues) {
+    const float s = std::sqrt(0.5f);
+    EXPECT_TRUE(Transform().is_translation_only());
+    EXPECT_TRUE(Transform::translate({1, -2, 3}).is_translation_only());
+    EXPECT_TRUE((Transform::translate({1, 2, 3}) * Transform::translate({-4, 0.5f, 9}))
+                    .is_translation_only());
+    EXPECT_TRUE(Transform(Mat4::identity()).is_translation_only());
+    EXPECT_FALSE(Transform::scale({1, 1, 2}).is_translation_only());
+    EXPECT_FALSE(Transform::rotate(Quat{0, 0, s, s}).is_translation_only());
+    EXPECT_FALSE(Transform::trs({1, 2, 3}, Quat{}, {-1, 1, 1}).is_translation_only());
+    Mat4 projective = Mat4::identity();
+    projective(3, 2) = 0.5f;
+    EXPECT_FALSE(Transform(projective).is_translation_only());
+
+    const Vec3 points[] = {{0.3f, -7.25f, 1e-3f}, {1e6f, -3e-5f, 2.5f}, {-1, -1, -1},
+                           {123.456f, 0.1f, -9e4f}};
+    for (const Transform& xf : {Transform(), Transform::translate({0.1f, -2e5f, 3.7f}),
+                                Transform::translate({-1e-4f, 0, 1e7f})})
+        for (Vec3 p : points) {
+            const Vec3 a = xf.point(p), b = point_by_matrix(xf, p);
+            EXPECT_EQ(a.x, b.x);
+            EXPECT_EQ(a.y, b.y);
+            EXPECT_EQ(a.z, b.z);
+            const Vec3 n = xf.normal(p), nb = normal_by_matrix(xf, p);
+            EXPECT_EQ(n.x, nb.x);
+            EXPECT_EQ(n.y, nb.y);
+            EXPECT_EQ(n.z, nb.z);
+            EXPECT_EQ(xf.vector(p).x, p.x);
+            EXPECT_FALSE(xf.swaps_handedness());
+        }
+    // The general path still matches its formula.
+    const Transform g = Transform::trs({1, 2, 3}, Quat{0, 0, s, s}, {2, -1, 0.5f});
+    EXPECT_TRUE(g.swaps_handedness());
+    for (Vec3 p : points) {
+        const Vec3 a = g.point(p), b = point_by_matrix(g, p);
+        EXPECT_EQ(a.x, b.x);
+        EXPECT_EQ(a.y, b.y);
+        EXPECT_EQ(a.z, b.z);
+        const Vec3 n = g.normal(p), nb = normal_by_matrix(g, p);
+        EXPECT_EQ(n.x, nb.x);
+        EXPECT_EQ(n.y, nb.y);
+        EXPECT_EQ(n.z, nb.z);
+    }
+}
+
 TEST(Frame, IsOrthonormalForAnyNormal) {
     for (Vec3 n : {Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(1, 0, 0), normalize(Vec3(1, 2, -3)),
                    normalize(Vec3(1e-8f, 0, -1))}) {
