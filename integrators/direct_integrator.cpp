@@ -18,8 +18,10 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
     PathMedia media;  // camera rays start outside all media
     for (int depth = 0;;) {
         const std::optional<Hit> hit = ctx.accel.intersect(ray);
-        // As in the path tracer: escaping rays have left every volume.
+        // As in the path tracer: escaping rays have left every volume, and so have hits
+        // outside a volume's bounds.
         if (hit && !media.stack.empty()) {
+            leave_outside(ctx, media.stack, ray.o + ray.d * hit->t);
             beta *= segment_transmittance(ctx, media.stack, ray, hit->t);
             if (is_black(beta)) break;
         }
@@ -89,7 +91,8 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         const Vec3 wi_world = sd.frame.to_world(specular->wi);
         if ((specular->wi.z > 0) != (dot(wi_world, side_normal(sp, sd.ng)) > 0)) break;
         beta *= specular->weight();
-        if (specular->wi.z < 0) cross_surface(ctx, media.stack, sp.material, sd.front_face);
+        if (specular->wi.z < 0)
+            cross_surface(ctx, media.stack, sp.material, sd.front_face, int(sp.instance));
         ray = spawn_ray(sp, wi_world, std::numeric_limits<float>::infinity(), ray.time);
     }
     return L;

@@ -61,8 +61,10 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
             first_hit && depth == 0 && passes == 0 ? *first_hit : ctx.accel.intersect(ray);
         // The medium the segment lies in absorbs along it up to the hit. A ray that
         // escapes has left every closed volume, whatever the stack says: it can only
-        // still hold one whose exit the ray grazed past within rounding at an edge.
+        // still hold one whose exit the ray grazed past within rounding at an edge. A
+        // hit outside a volume's bounds likewise proves the path left it (leave_outside).
         if (kMedia && hit && !media.stack.empty()) {
+            leave_outside(ctx, media.stack, ray.o + ray.d * hit->t);
             beta *= segment_transmittance(ctx, media.stack, ray, hit->t);
             if (is_black(beta)) break;
         }
@@ -126,7 +128,8 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         // The same bump shadowing as the light samples' (direct_lighting.h).
         beta *= bs->weight() * bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, wi_world);
         // The frame faces wo: a sample below it crossed the surface, into or out of a volume.
-        if (kMedia && bs->wi.z < 0) cross_surface(ctx, media.stack, sp.material, sd.front_face);
+        if (kMedia && bs->wi.z < 0)
+            cross_surface(ctx, media.stack, sp.material, sd.front_face, int(sp.instance));
         eta_scale *= bs->eta * bs->eta;
         specular_bounce = bs->is_specular();
         if (!specular_bounce && m_options.regularize_roughness > 0)

@@ -15,10 +15,11 @@ Spectrum segment_transmittance(const RenderContext& ctx, const MediumStack& stac
     return medium->transmittance(unit, t * len);
 }
 
-void cross_surface(const RenderContext& ctx, MediumStack& stack, int material, bool front_face) {
+void cross_surface(const RenderContext& ctx, MediumStack& stack, int material, bool front_face,
+                   int instance) {
     if (!ctx.media.has_volume(material)) return;
     if (front_face)
-        stack.enter(material);
+        stack.enter(material, instance);
     else
         stack.leave(material);
 }

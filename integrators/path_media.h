@@ -31,8 +31,17 @@ Spectrum segment_transmittance(const RenderContext& ctx, const MediumStack& stac
 
 // A sample crossed the surface of `material` at a hit that wo saw from its front
 // (front_face) or back: the path enters that material's volume from the front and leaves
-// it from the back; thin-walled materials change nothing.
-void cross_surface(const RenderContext& ctx, MediumStack& stack, int material, bool front_face);
+// it from the back; thin-walled materials change nothing. instance: the hit's (for
+// leave_outside), -1 if unknown.
+void cross_surface(const RenderContext& ctx, MediumStack& stack, int material, bool front_face,
+                   int instance = -1);
+
+// At a hit at p: drops the volumes whose instance p lies clearly outside of (an entry
+// through a face the ray only skimmed within rounding; MediumSet::surely_outside).
+inline void leave_outside(const RenderContext& ctx, MediumStack& stack, Vec3 p) {
+    if (!stack.empty())
+        stack.leave_where([&](int instance) { return ctx.media.surely_outside(instance, p); });
+}
 
 SideMedia side_media(const RenderContext& ctx, const MediumStack& stack, int material,
                      bool front_face);

@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/math/bounds.h"
 #include "core/media/medium.h"
 #include "core/scene/scene.h"
 
@@ -32,8 +33,23 @@ public:
         return false;
     }
 
+    // Whether p lies clearly outside the world bounds of instance (static instances
+    // with a volume; false for others): a path there cannot be inside that instance's
+    // closed meshes, whatever its stack says. Robust traversal reports hits within
+    // rounding outside a triangle, so a ray skimming past a box's edge can "enter" a
+    // face it passed by; without this the path would carry the medium until it escapes.
+    bool surely_outside(int instance, Vec3 p) const {
+        if (instance < 0 || instance >= int(m_bounds.size())) return false;
+        const Bounds3& b = m_bounds[instance];
+        return !b.empty() && (p.x < b.lo.x || p.y < b.lo.y || p.z < b.lo.z || p.x > b.hi.x ||
+                              p.y > b.hi.y || p.z > b.hi.z);
+    }
+
 private:
     std::vector<std::shared_ptr<const Medium>> m_media;  // per material; null: thin-walled
+    // Per instance: its world bounds grown by a margin where it holds a volume material
+    // and neither moves nor deforms; empty otherwise (never "outside").
+    std::vector<Bounds3> m_bounds;
 };
 
 // KHR_materials_volume's switch: thicknessFactor > 0 makes the mesh a closed volume; 0

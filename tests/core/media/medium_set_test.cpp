@@ -10,6 +10,7 @@
 #include "core/media/homogeneous_medium.h"
 #include "io/gltf_loader.h"
 #include "support/paths.h"
+#include "support/scene_builder.h"
 
 namespace penumbra {
 namespace {
@@ -43,6 +44,28 @@ TEST(MediumSet, OneMediumPerVolumeMaterial) {
     EXPECT_NEAR(s.y, std::log(2.0f) / 2, 1e-6f);
     EXPECT_EQ(s.z, 0.0f);
     EXPECT_FALSE(media.has_volume(3));  // past the end
+}
+
+TEST(MediumSet, PointsClearlyOutsideAVolumeInstanceAreOutside) {
+    // A unit cube of a volume material scaled to [-1, 1]^3 and one of a thin material:
+    // only points beyond the volume's bounds (plus a margin of about 1e-4) are outside,
+    // and instances without a volume are never ruled out.
+    Scene scene;
+    MaterialDesc thin, volume;
+    volume.thickness = 1;
+    scene.materials = {thin, volume};
+    const uint32_t inside = test::add_instance(scene, test::add_cube_object(scene, 1),
+                                               Transform::scale(Vec3(2)));
+    const uint32_t sheet = test::add_instance(scene, test::add_cube_object(scene, 0),
+                                              Transform::scale(Vec3(2)));
+    const MediumSet media(scene);
+    EXPECT_FALSE(media.surely_outside(int(inside), {0, 0, 0}));
+    EXPECT_FALSE(media.surely_outside(int(inside), {-1, 1, 1}));
+    EXPECT_FALSE(media.surely_outside(int(inside), {-1, 1.00000012f, 1}));  // rounding
+    EXPECT_TRUE(media.surely_outside(int(inside), {-1, 1.001f, 1}));
+    EXPECT_TRUE(media.surely_outside(int(inside), {20, 4, -1}));
+    EXPECT_FALSE(media.surely_outside(int(sheet), {20, 4, -1}));
+    EXPECT_FALSE(media.surely_outside(-1, {20, 4, -1}));
 }
 
 TEST(MediumSet, AttenuationTestFileGetsItsMedia) {

@@ -51,5 +51,21 @@ TEST(MediumStack, LeavingWhatWasNotEnteredAndOverflowChangeNothing) {
     EXPECT_EQ(s.current(), 10 + MediumStack::kCapacity - 2);
 }
 
+TEST(MediumStack, LeaveWhereDropsTheEntriesOfRuledOutInstancesOnly) {
+    MediumStack s;
+    s.enter(1, 5);
+    s.enter(2);  // instance unknown: never dropped
+    s.enter(3, 6);
+    s.enter(1, 7);
+    s.leave_where([](int instance) { return instance == 5 || instance == 7; });
+    ASSERT_EQ(s.size(), 2);
+    EXPECT_EQ(s.current(), 3);
+    EXPECT_EQ(s.enclosing(), 2);
+    s.leave_where([](int) { return true; });
+    EXPECT_EQ(s.current(), 2);
+    s.leave(3);  // already gone: nothing changes
+    EXPECT_EQ(s.current(), 2);
+}
+
 }  // namespace
 }  // namespace penumbra
