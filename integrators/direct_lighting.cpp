@@ -74,9 +74,17 @@ Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
                           const ShadingData& sd, Vec3 wo, float time, Sampler& sampler,
                           LightStrategy strategy, float light_samples, float bsdf_samples,
                           const SideMedia& media) {
+    // Where the choice allows it, the light sample's first coordinate chooses the light
+    // too (rescaled, as Cycles does): the points on an emitter made of several triangles
+    // (the Cornell box's two-triangle panel) then stay stratified over all of it, not
+    // over each triangle apart; direct light's relMSE there fell 30% at 64 spp
+    // (docs/performance.md). u_light is drawn in every case, so that the sampler's
+    // dimensions do not depend on the light sampler.
     const float u_light = sampler.get_1d();
-    const Vec2 u = sampler.get_2d();
-    const std::optional<SampledLight> chosen = ctx.lights.sample(ShadingPoint{sp.p, sd.ng}, u_light);
+    Vec2 u = sampler.get_2d();
+    const std::optional<SampledLight> chosen =
+        ctx.lights.remaps_choice() ? ctx.lights.sample_remapped(u.x, &u.x)
+                                   : ctx.lights.sample(ShadingPoint{sp.p, sd.ng}, u_light);
     if (!chosen) return Spectrum(0);
     return sample_chosen_light(ctx, sp, sd, wo, time, sampler, &*chosen, u, strategy,
                                light_samples, bsdf_samples, media);

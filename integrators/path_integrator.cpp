@@ -1,5 +1,8 @@
 #include "integrators/path_integrator.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "integrators/direct_lighting.h"
 
 namespace penumbra {
@@ -141,10 +144,13 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         if (!is_finite(beta) || is_black(beta)) break;
 
         if (depth >= m_options.rr_depth) {
-            // Continue with probability proportional to the throughput (capped at 1).
-            const float q = std::max(0.05f, 1 - max_component(beta) * eta_scale);
-            if (sampler.get_1d() < q) break;
-            beta /= 1 - q;
+            // Continue with probability sqrt(throughput), capped at 1, as Cycles'
+            // path_state_continuation_probability: milder than pbrt-v4's linear rule, whose
+            // survivors (throughput then 1) face a cut at every further bounce; 9-10% better
+            // relMSE x time on the Lambertian Cornell box (docs/performance.md).
+            const float p = std::min(1.0f, std::sqrt(max_component(beta) * eta_scale));
+            if (sampler.get_1d() < 1 - p) break;
+            beta /= p;
         }
         const RayCone cone = bounce_cone(ray.cone, sp.cone_width, bs->pdf, bs->is_specular());
         ray = spawn_ray(sp, wi_world, std::numeric_limits<float>::infinity(), ray.time);

@@ -57,6 +57,12 @@ public:
     // A light for the receiver ref (its geometric normal, or zero in a medium), from one
     // u in [0,1). Empty when no light can reach ref (the BVH knows some cannot).
     std::optional<SampledLight> sample(const ShadingPoint& ref, float u) const;
+    // Uniform and power choices depend on u alone and can also return u rescaled to [0,1)
+    // within the chosen light's share (pbrt-v4's AliasTable uRemapped; Cycles'
+    // light_distribution_sample), so that one sample coordinate both chooses the light
+    // and places the point on it. The BVH's choice cannot: use sample(ref, u) there.
+    bool remaps_choice() const { return m_type != LightSamplerType::Bvh; }
+    std::optional<SampledLight> sample_remapped(float u, float* u_remapped) const;
     // Probability that sample(ref, .) picks this light: the MIS weight of an emitter a
     // BSDF-sampled ray from ref hits needs it at the same ref.
     float pmf(const ShadingPoint& ref, const Light* light) const;

@@ -16,8 +16,10 @@ public:
     explicit AliasTable(const std::vector<float>& weights);
     bool empty() const { return m_bins.empty(); }
     size_t size() const { return m_bins.size(); }
-    // Index chosen with probability pmf(index), from one uniform u in [0,1).
-    uint32_t sample(float u, float* pmf = nullptr) const;
+    // Index chosen with probability pmf(index), from one uniform u in [0,1). u_remapped
+    // gets u rescaled to [0,1) within the part of [0,1) that chose the index: uniform and
+    // independent of the choice, so it can serve as a further sample (pbrt-v4).
+    uint32_t sample(float u, float* pmf = nullptr, float* u_remapped = nullptr) const;
     float pmf(uint32_t index) const { return m_bins[index].p; }
 
 private:

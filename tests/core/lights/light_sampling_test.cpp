@@ -13,8 +13,8 @@
 namespace penumbra {
 namespace {
 
-// Five tests of sampling in this file share the overall level.
-const double kLevel = test::sidak_significance(0.01, 5);
+// Six tests of sampling in this file share the overall level.
+const double kLevel = test::sidak_significance(0.01, 6);
 
 // A small HDR sky with a bright sun, a dark band and a black row.
 Image test_sky() {
@@ -125,6 +125,29 @@ TEST(AliasTable, SamplesInProportionToWeights) {
     EXPECT_TRUE(r.passed) << r.report;
     EXPECT_EQ(observed[1], 0);
     EXPECT_TRUE(AliasTable(std::vector<float>{0, 0}).empty());
+}
+
+// The remapped u serves as a further sample (sample_one_light places the light point
+// with it): given each choice it must be uniform. Cells: (index, tenth of [0,1)).
+TEST(AliasTable, RemappedUIsUniformGivenTheChoice) {
+    const std::vector<float> w = {1, 0, 3, 0.5f, 10, 0, 2.5f};
+    const AliasTable table(w);
+    const size_t bins = 10;
+    std::vector<double> observed(w.size() * bins), expected(w.size() * bins);
+    const int n = 400000;
+    Rng rng(7);
+    for (int i = 0; i < n; ++i) {
+        float u_remapped = -1;
+        const uint32_t k = table.sample(rng.next_float(), nullptr, &u_remapped);
+        ASSERT_GE(u_remapped, 0.0f);
+        ASSERT_LT(u_remapped, 1.0f);
+        observed[k * bins + std::min(size_t(u_remapped * bins), bins - 1)] += 1;
+    }
+    for (size_t c = 0; c < expected.size(); ++c) expected[c] = n * w[c / bins] / 17.0 / bins;
+    const auto r = test::chi2_compare(observed, expected, n, kLevel, [&](size_t c) {
+        return std::to_string(c / bins) + "/" + std::to_string(c % bins);
+    });
+    EXPECT_TRUE(r.passed) << r.report;
 }
 
 TEST(Distribution2D, PdfIntegratesToOneAndMatchesSamples) {
