@@ -38,43 +38,41 @@ def embree_seconds(threads, repeats):
     return out
 
 
-def embree_table(args, identities):
-    a = copy.copy(args)
-    a.size, a.max_depth = SIZE, SEGMENTS  # penumbra's --max-depth 8: 8 path segments
-    prepared = prepare("cornell-point", os.path.join(args.cache, "scenes"))
-    seeds = range(1, args.repeats + 1)
-    rows = []
-    pen = Cache(args.cache, "cornell-point", prepared, identities["penumbra"],
+def timed_row(name, cache, seeds):
+    """(name, render s, process s, CPU s): medians over the seeds' renders."""
+    times = [cache.times(SPP, s) for s in seeds]
+    return (name, median([t["render_s"] for t in times]),
+            median([t["process_s"] for t in times]), median([t["cpu_s"] for t in times]))
+
+
+def penumbra_row(name, scene, args, a, identities, seeds):
+    prepared = prepare(scene, os.path.join(args.cache, "scenes"))
+    pen = Cache(args.cache, scene, prepared, identities["penumbra"],
                 {"size": SIZE, "max_depth": SEGMENTS, "threads": args.threads,
                  "extra": args.penumbra_args})
     for seed in seeds:
         if not pen.done(SPP, seed):
             penumbra_render(a, prepared, pen, SPP, seed)
-    times = [pen.times(SPP, s) for s in seeds]
-    rows.append(("penumbra", median([t["render_s"] for t in times]),
-                 median([t["process_s"] for t in times]), median([t["cpu_s"] for t in times])))
+    return prepared, pen, timed_row(name, pen, seeds)
+
+
+def embree_table(args, identities):
+    a = copy.copy(args)
+    a.size, a.max_depth = SIZE, SEGMENTS  # penumbra's --max-depth 8: 8 path segments
+    seeds = range(1, args.repeats + 1)
+    prepared, pen, row = penumbra_row("penumbra", "cornell-point", args, a, identities, seeds)
+    rows = [row]
     if "cycles" in args.renderers:
         cyc = Cache(args.cache, "cornell-point", prepared, identities["cycles"],
                     {"size": SIZE, "max_depth": SEGMENTS, "threads": args.threads})
         cycles_renders(a, "cornell-point", prepared, cyc, pen.path(SPP, 1),
                        [(SPP, s) for s in seeds if not cyc.done(SPP, s)])
-        times = [cyc.times(SPP, s) for s in seeds]
-        rows.append(("Cycles", median([t["render_s"] for t in times]),
-                     median([t["process_s"] for t in times]), median([t["cpu_s"] for t in times])))
+        rows.append(timed_row("Cycles", cyc, seeds))
     # penumbra on the tutorial's own OBJ, light and camera (embree_cornell.py): the same
     # work as the tutorial, ray for ray up to the two renderers' sampling.
     if os.path.exists(ECS):
-        own = prepare("embree-cornell", os.path.join(args.cache, "scenes"))
-        pen = Cache(args.cache, "embree-cornell", own, identities["penumbra"],
-                    {"size": SIZE, "max_depth": SEGMENTS, "threads": args.threads,
-                     "extra": args.penumbra_args})
-        for seed in seeds:
-            if not pen.done(SPP, seed):
-                penumbra_render(a, own, pen, SPP, seed)
-        times = [pen.times(SPP, s) for s in seeds]
-        rows.append(("penumbra, the tutorial's scene", median([t["render_s"] for t in times]),
-                     median([t["process_s"] for t in times]),
-                     median([t["cpu_s"] for t in times])))
+        rows.append(penumbra_row("penumbra, the tutorial's scene", "embree-cornell", args, a,
+                                 identities, seeds)[2])
     embree = embree_seconds(args.threads, args.repeats)
     lines = ["Equal spp: Cornell box with a point light, %d x %d, %d spp, %d path segments, "
              "%d threads; medians of %d. CPU seconds: the whole process for penumbra and "
