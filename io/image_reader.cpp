@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <mutex>
 
 #include "core/error.h"
 #include "io/color.h"
@@ -66,8 +67,17 @@ auto decode_with(const std::vector<uint8_t>& bytes, const std::string& name, con
         config.attribute("oiio:UnassociatedAlpha", 1);
         if (!in || !in->supports("ioproxy"))
             throw ImageDecodeError(name, std::string("no reader for format '") + ext + "'");
-        if (!in->set_ioproxy(&proxy) || !in->open(std::string("memory.") + ext, spec_in, config))
-            throw ImageDecodeError(name, one_line(in->geterror()));
+        if (!in->set_ioproxy(&proxy)) throw ImageDecodeError(name, one_line(in->geterror()));
+        {
+            // Headers are opened one at a time: OIIO 2.4's JPEG reader decodes ICC
+            // profiles (decode_icc_profile, inside open) through state that threads
+            // share; two of chess-board.glb's textures opened at once freed the same
+            // block twice under ASan. Pixels still decode in parallel.
+            static std::mutex open_mutex;
+            std::lock_guard<std::mutex> lock(open_mutex);
+            if (!in->open(std::string("memory.") + ext, spec_in, config))
+                throw ImageDecodeError(name, one_line(in->geterror()));
+        }
 
         const OIIO::ImageSpec& spec = in->spec();
         if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)

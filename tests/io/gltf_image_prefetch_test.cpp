@@ -5,8 +5,12 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <thread>
+#include <vector>
+
 #include "io/gltf_loader.h"
 #include "support/gltf_builder.h"
+#include "support/paths.h"
 
 namespace penumbra {
 namespace {
@@ -83,6 +87,22 @@ TEST(GltfImagePrefetch, ImagesWarningsAndOrderAreThoseOfASerialLoad) {
                   std::string::npos)
             << log;
     }
+}
+
+TEST(GltfImagePrefetch, JpegsWithIccProfilesOpenSafelyInParallel) {
+    // chess-board.glb's JPEG textures carry ICC profiles, which OIIO 2.4 decodes through
+    // state its threads share: opened at once they freed one block twice (the ASan pass
+    // caught it in a load's parallel prefetch). Several loads at once, each decoding in
+    // parallel, open many such headers together; all must load the same images.
+    const std::string path = test::shared_path("scenes/wild/ChessBoard/chess-board.glb");
+    const Scene reference = load_gltf(path);
+    ASSERT_FALSE(reference.images.empty());
+    std::vector<size_t> counts(3, 0);
+    std::vector<std::thread> threads;
+    for (size_t t = 0; t < counts.size(); ++t)
+        threads.emplace_back([&, t] { counts[t] = load_gltf(path).images.size(); });
+    for (std::thread& t : threads) t.join();
+    for (size_t n : counts) EXPECT_EQ(n, reference.images.size());
 }
 
 }  // namespace
