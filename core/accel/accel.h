@@ -27,15 +27,12 @@ struct AccelStats {
 // Rays every accelerator answers with a miss without tracing them: a NaN or infinite
 // component, a coordinate beyond 1.844e18 (Embree's FLT_LARGE: its ray.valid() assertion
 // aborts the process on such rays), a zero direction, or a NaN or empty [tmin, tmax].
-// Inline and without branches (& not &&): it runs before every query.
+// Inline: it runs before every query.
 inline bool is_traceable(const Ray& ray) {
     constexpr float kLarge = 1.844e18f;
-    // Written so that NaN fails every comparison.
-    const bool finite = (std::abs(ray.o.x) <= kLarge) & (std::abs(ray.o.y) <= kLarge) &
-                        (std::abs(ray.o.z) <= kLarge) & (std::abs(ray.d.x) <= kLarge) &
-                        (std::abs(ray.d.y) <= kLarge) & (std::abs(ray.d.z) <= kLarge);
-    const bool nonzero = (ray.d.x != 0) | (ray.d.y != 0) | (ray.d.z != 0);
-    return finite & nonzero & (ray.tmin <= ray.tmax);
+    for (int a = 0; a < 3; ++a)  // written so that NaN fails every test
+        if (!(std::abs(ray.o[a]) <= kLarge && std::abs(ray.d[a]) <= kLarge)) return false;
+    return (ray.d.x != 0 || ray.d.y != 0 || ray.d.z != 0) && ray.tmin <= ray.tmax;
 }
 
 class Accel {

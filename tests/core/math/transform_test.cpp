@@ -102,6 +102,18 @@ Vec3 normal_by_matrix(const Transform& xf, Vec3 n) {
     return r;
 }
 
+// xf's point and normal equal the written-out formulas bit for bit.
+void expect_formulas(const Transform& xf, Vec3 p) {
+    const Vec3 a = xf.point(p), b = point_by_matrix(xf, p);
+    EXPECT_EQ(a.x, b.x);
+    EXPECT_EQ(a.y, b.y);
+    EXPECT_EQ(a.z, b.z);
+    const Vec3 n = xf.normal(p), nb = normal_by_matrix(xf, p);
+    EXPECT_EQ(n.x, nb.x);
+    EXPECT_EQ(n.y, nb.y);
+    EXPECT_EQ(n.z, nb.z);
+}
+
 TEST(Transform, TranslationsTakeTheShortcutWithTheGeneralFormulasValues) {
     const float s = std::sqrt(0.5f);
     EXPECT_TRUE(Transform().is_translation_only());
@@ -121,30 +133,14 @@ TEST(Transform, TranslationsTakeTheShortcutWithTheGeneralFormulasValues) {
     for (const Transform& xf : {Transform(), Transform::translate({0.1f, -2e5f, 3.7f}),
                                 Transform::translate({-1e-4f, 0, 1e7f})})
         for (Vec3 p : points) {
-            const Vec3 a = xf.point(p), b = point_by_matrix(xf, p);
-            EXPECT_EQ(a.x, b.x);
-            EXPECT_EQ(a.y, b.y);
-            EXPECT_EQ(a.z, b.z);
-            const Vec3 n = xf.normal(p), nb = normal_by_matrix(xf, p);
-            EXPECT_EQ(n.x, nb.x);
-            EXPECT_EQ(n.y, nb.y);
-            EXPECT_EQ(n.z, nb.z);
+            expect_formulas(xf, p);
             EXPECT_EQ(xf.vector(p).x, p.x);
             EXPECT_FALSE(xf.swaps_handedness());
         }
     // The general path still matches its formula.
     const Transform g = Transform::trs({1, 2, 3}, Quat{0, 0, s, s}, {2, -1, 0.5f});
     EXPECT_TRUE(g.swaps_handedness());
-    for (Vec3 p : points) {
-        const Vec3 a = g.point(p), b = point_by_matrix(g, p);
-        EXPECT_EQ(a.x, b.x);
-        EXPECT_EQ(a.y, b.y);
-        EXPECT_EQ(a.z, b.z);
-        const Vec3 n = g.normal(p), nb = normal_by_matrix(g, p);
-        EXPECT_EQ(n.x, nb.x);
-        EXPECT_EQ(n.y, nb.y);
-        EXPECT_EQ(n.z, nb.z);
-    }
+    for (Vec3 p : points) expect_formulas(g, p);
 }
 
 TEST(Frame, IsOrthonormalForAnyNormal) {
