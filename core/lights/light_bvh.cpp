@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace penumbra {
 
 namespace {
@@ -30,6 +34,121 @@ float split_cost(const LightBounds& b, int axis) {
     return b.phi * m_omega * kr * area;
 }
 
+
+// Four floats, one per child of a node: SSE where the target has it (every x86-64), else
+// a plain array the compiler may vectorise. Only what importance4 needs.
+#if defined(__SSE2__)
+struct F4 {
+    __m128 v;
+    F4() = default;
+    explicit F4(__m128 x) : v(x) {}
+    F4(float x) : v(_mm_set1_ps(x)) {}  // NOLINT: broadcasts, as the scalar formulas read
+    static F4 load(const float* p) { return F4(_mm_load_ps(p)); }
+    void store(float* p) const { _mm_store_ps(p, v); }
+};
+inline F4 operator+(F4 a, F4 b) { return F4(_mm_add_ps(a.v, b.v)); }
+inline F4 operator-(F4 a, F4 b) { return F4(_mm_sub_ps(a.v, b.v)); }
+inline F4 operator*(F4 a, F4 b) { return F4(_mm_mul_ps(a.v, b.v)); }
+inline F4 operator/(F4 a, F4 b) { return F4(_mm_div_ps(a.v, b.v)); }
+inline F4 sqrt4(F4 a) { return F4(_mm_sqrt_ps(a.v)); }
+inline F4 min4(F4 a, F4 b) { return F4(_mm_min_ps(a.v, b.v)); }
+inline F4 max4(F4 a, F4 b) { return F4(_mm_max_ps(a.v, b.v)); }
+// Masks are all-ones lanes, as SSE's comparisons give them.
+inline F4 gt(F4 a, F4 b) { return F4(_mm_cmpgt_ps(a.v, b.v)); }
+// m ? a : b, lane by lane.
+inline F4 select(F4 m, F4 a, F4 b) {
+    return F4(_mm_or_ps(_mm_and_ps(m.v, a.v), _mm_andnot_ps(m.v, b.v)));
+}
+// a with the bits of mask cleared (mask: sign bits, so |a| where set).
+inline F4 clear_bits(F4 a, const uint32_t* mask) {
+    return F4(_mm_andnot_ps(_mm_load_ps(reinterpret_cast<const float*>(mask)), a.v));
+}
+#else
+struct F4 {
+    float v[4];
+    F4() = default;
+    F4(float x) : v{x, x, x, x} {}  // NOLINT: broadcasts, as the scalar formulas read
+    static F4 load(const float* p) { return {p[0], p[1], p[2], p[3]}; }
+    void store(float* p) const { std::copy(v, v + 4, p); }
+    F4(float a, float b, float c, float d) : v{a, b, c, d} {}
+};
+template <typename Op>
+F4 lanes(F4 a, F4 b, Op op) {
+    return {op(a.v[0], b.v[0]), op(a.v[1], b.v[1]), op(a.v[2], b.v[2]), op(a.v[3], b.v[3])};
+}
+inline F4 operator+(F4 a, F4 b) { return lanes(a, b, [](float x, float y) { return x + y; }); }
+inline F4 operator-(F4 a, F4 b) { return lanes(a, b, [](float x, float y) { return x - y; }); }
+inline F4 operator*(F4 a, F4 b) { return lanes(a, b, [](float x, float y) { return x * y; }); }
+inline F4 operator/(F4 a, F4 b) { return lanes(a, b, [](float x, float y) { return x / y; }); }
+inline F4 sqrt4(F4 a) { return lanes(a, a, [](float x, float) { return std::sqrt(x); }); }
+// As SSE's min/max: the second operand when either is NaN.
+inline F4 min4(F4 a, F4 b) { return lanes(a, b, [](float x, float y) { return x < y ? x : y; }); }
+inline F4 max4(F4 a, F4 b) { return lanes(a, b, [](float x, float y) { return x > y ? x : y; }); }
+inline F4 gt(F4 a, F4 b) { return lanes(a, b, [](float x, float y) { return x > y ? 1.0f : 0.0f; }); }
+inline F4 select(F4 m, F4 a, F4 b) {
+    return {m.v[0] != 0 ? a.v[0] : b.v[0], m.v[1] != 0 ? a.v[1] : b.v[1],
+            m.v[2] != 0 ? a.v[2] : b.v[2], m.v[3] != 0 ? a.v[3] : b.v[3]};
+}
+inline F4 clear_bits(F4 a, const uint32_t* mask) {
+    F4 r;
+    for (int k = 0; k < 4; ++k) r.v[k] = mask[k] ? std::abs(a.v[k]) : a.v[k];
+    return r;
+}
+#endif
+
+// cos(max(0, a - b)), sin(max(0, a - b)) lane by lane (pbrt-v4's cosSubClamped /
+// sinSubClamped, as LightBounds::importance uses them).
+inline F4 cos_sub_clamped(F4 sin_a, F4 cos_a, F4 sin_b, F4 cos_b) {
+    return select(gt(cos_a, cos_b), F4(1.0f), cos_a * cos_b + sin_a * sin_b);
+}
+inline F4 sin_sub_clamped(F4 sin_a, F4 cos_a, F4 sin_b, F4 cos_b) {
+    return select(gt(cos_a, cos_b), F4(0.0f), sin_a * cos_b - cos_a * sin_b);
+}
+inline F4 sin_from_cos(F4 c) { return sqrt4(max4(F4(0.0f), F4(1.0f) - c * c)); }
+
+// LightBounds::importance for the four children of a node at once, from the node's
+// precomputed bounds. One difference: "p inside the box" is read as "p inside the box's
+// bounding sphere" (which holds the box), so no box is stored.
+F4 importance4(const LightBvh::Node& node, Vec3 p, Vec3 n) {
+    const F4 dx = F4(p.x) - F4::load(node.cx), dy = F4(p.y) - F4::load(node.cy),
+             dz = F4(p.z) - F4::load(node.cz);
+    const F4 r2 = F4::load(node.r2);
+    const F4 ld2 = dx * dx + dy * dy + dz * dz;
+    const F4 d2 = max4(max4(ld2, r2), F4(1e-20f));
+    const F4 has_dir = gt(ld2, F4(0.0f));
+    const F4 inv_len = F4(1.0f) / sqrt4(ld2);  // inf at 0: those lanes are not selected
+    // At the centroid the direction is the cone's axis, as in LightBounds::importance.
+    F4 cos_w = select(has_dir,
+                      (dx * F4::load(node.wx) + dy * F4::load(node.wy) + dz * F4::load(node.wz)) *
+                          inv_len,
+                      F4(1.0f));
+    cos_w = clear_bits(cos_w, node.two_sided);
+    const F4 sin_w = sin_from_cos(cos_w);
+
+    // theta_b: the cone from p that holds the box's bounding sphere; all directions inside.
+    const F4 outside = gt(ld2, r2);
+    const F4 s = min4(r2 / max4(ld2, F4(1e-30f)), F4(1.0f));  // sin^2 theta_b outside
+    const F4 cos_b = select(outside, sqrt4(F4(1.0f) - s), F4(-1.0f));
+    const F4 sin_b = select(outside, sqrt4(s), F4(0.0f));
+
+    const F4 cos_o = F4::load(node.cos_o), sin_o = F4::load(node.sin_o);
+    const F4 cos_x = cos_sub_clamped(sin_w, cos_w, sin_o, cos_o);
+    const F4 sin_x = sin_sub_clamped(sin_w, cos_w, sin_o, cos_o);
+    const F4 cos_p = cos_sub_clamped(sin_x, cos_x, sin_b, cos_b);
+    F4 importance = F4::load(node.phi) * max4(F4(0.0f), cos_p) / d2;
+    if (n.x != 0 || n.y != 0 || n.z != 0) {
+        F4 cos_i = (dx * F4(n.x) + dy * F4(n.y) + dz * F4(n.z)) * inv_len;
+        cos_i = select(has_dir, max4(cos_i, F4(0.0f) - cos_i), F4(1.0f));
+        const F4 sin_i = sin_from_cos(cos_i);
+        importance = importance * max4(F4(0.0f), cos_sub_clamped(sin_i, cos_i, sin_b, cos_b));
+    }
+    // Strictly outside the emission spread nothing arrives (cos_p < cos_theta_e).
+    return select(gt(F4::load(node.cos_e), cos_p), F4(0.0f), importance);
+}
+
+// The sum every descent divides by, in one fixed order so sample() and pmf() agree.
+inline float sum4(const float i[4]) { return (i[0] + i[1]) + (i[2] + i[3]); }
+
 }  // namespace
 
 LightBvh::LightBvh(std::vector<std::pair<uint32_t, LightBounds>> lights) {
@@ -40,17 +159,19 @@ LightBvh::LightBvh(std::vector<std::pair<uint32_t, LightBounds>> lights) {
     uint32_t max_index = 0;
     for (const auto& l : lights) max_index = std::max(max_index, l.first);
     m_trail.assign(size_t(max_index) + 1, kNotInTree);
-    m_nodes.reserve(2 * lights.size() - 1);
-    build(lights, 0, lights.size(), 0, 0);
+    m_binary.reserve(2 * lights.size() - 1);
+    build(lights, 0, lights.size(), 0);
+    m_nodes.reserve(lights.size() / 2 + 1);
+    collapse(0, 0, 0);
+    m_binary = {};
 }
 
 uint32_t LightBvh::build(std::vector<std::pair<uint32_t, LightBounds>>& lights, size_t begin,
-                         size_t end, int depth, uint64_t trail) {
-    const uint32_t node = static_cast<uint32_t>(m_nodes.size());
-    m_nodes.emplace_back();
+                         size_t end, int depth) {
+    const uint32_t node = static_cast<uint32_t>(m_binary.size());
+    m_binary.emplace_back();
     if (end - begin == 1) {
-        m_nodes[node] = Node{lights[begin].second, lights[begin].first, true};
-        m_trail[lights[begin].first] = trail;
+        m_binary[node] = BinaryNode{lights[begin].second, lights[begin].first, true};
         return node;
     }
     LightBounds all;
@@ -76,10 +197,15 @@ uint32_t LightBvh::build(std::vector<std::pair<uint32_t, LightBounds>>& lights, 
             const int b = bucket_of(lights[i].second, axis);
             bucket[b] = merge(bucket[b], lights[i].second);
         }
+        // Bounds of the buckets above each split, swept once from the top (the build spent
+        // most of its time re-merging them for every split).
+        LightBounds above_of[kBuckets];
+        for (int b = kBuckets - 1; b > 0; --b)
+            above_of[b - 1] = merge(bucket[b], b + 1 < kBuckets ? above_of[b] : LightBounds{});
+        LightBounds below;
         for (int split = 0; split < kBuckets - 1; ++split) {
-            LightBounds below, above;
-            for (int b = 0; b <= split; ++b) below = merge(below, bucket[b]);
-            for (int b = split + 1; b < kBuckets; ++b) above = merge(above, bucket[b]);
+            below = merge(below, bucket[split]);
+            const LightBounds& above = above_of[split];
             if (!(below.phi > 0) || !(above.phi > 0)) continue;
             const float cost = split_cost(below, axis) + split_cost(above, axis);
             if (cost < best_cost) best_cost = cost, best_axis = axis, best_bucket = split;
@@ -106,39 +232,92 @@ uint32_t LightBvh::build(std::vector<std::pair<uint32_t, LightBounds>>& lights, 
                              return a.second.centroid()[axis] < b.second.centroid()[axis];
                          });
     }
-    build(lights, begin, mid, depth + 1, trail);
-    const uint32_t second = build(lights, mid, end, depth + 1, trail | (uint64_t(1) << depth));
-    m_nodes[node] = Node{all, second, false};
+    build(lights, begin, mid, depth + 1);
+    const uint32_t second = build(lights, mid, end, depth + 1);
+    m_binary[node] = BinaryNode{all, second, false};
     return node;
 }
 
-std::pair<float, float> LightBvh::child_importance(uint32_t i, Vec3 p, Vec3 n) const {
-    return {m_nodes[i + 1].bounds.importance(p, n),
-            m_nodes[m_nodes[i].index].bounds.importance(p, n)};
+
+uint32_t LightBvh::collapse(uint32_t binary, int depth, uint64_t trail) {
+    // Up to four slots: the binary node's children, each interior one replaced by its own
+    // two children. A lone light at the root is its own (single) slot.
+    uint32_t slots[4];
+    int count = 0;
+    const BinaryNode& b = m_binary[binary];
+    if (b.leaf) {
+        slots[count++] = binary;
+    } else {
+        for (const uint32_t c : {binary + 1, b.index}) {
+            if (m_binary[c].leaf) {
+                slots[count++] = c;
+            } else {
+                slots[count++] = c + 1;
+                slots[count++] = m_binary[c].index;
+            }
+        }
+    }
+    const uint32_t index = static_cast<uint32_t>(m_nodes.size());
+    m_nodes.emplace_back();
+    Node node{};
+    for (int k = 0; k < 4; ++k) {
+        node.wz[k] = 1, node.cos_o[k] = 1;  // an empty slot: phi 0, importance 0
+        if (k >= count) continue;
+        const BinaryNode& s = m_binary[slots[k]];
+        const LightBounds& l = s.bounds;
+        const Vec3 c = l.centroid();
+        node.cx[k] = c.x, node.cy[k] = c.y, node.cz[k] = c.z;
+        node.r2[k] = 0.25f * length_squared(l.hi - l.lo);
+        node.phi[k] = l.phi;
+        node.wx[k] = l.w.x, node.wy[k] = l.w.y, node.wz[k] = l.w.z;
+        node.cos_o[k] = l.cos_theta_o;
+        node.sin_o[k] = std::sqrt(std::max(0.0f, 1 - l.cos_theta_o * l.cos_theta_o));
+        node.cos_e[k] = l.cos_theta_e;
+        node.two_sided[k] = l.two_sided ? 0x80000000u : 0u;
+        const uint64_t t = trail | (uint64_t(k) << (2 * depth));
+        if (s.leaf) {
+            node.child[k] = s.index;
+            node.leaf_mask |= 1u << k;
+            m_trail[s.index] = t;
+        } else {
+            node.child[k] = collapse(slots[k], depth + 1, t);
+        }
+    }
+    m_nodes[index] = node;
+    return index;
+}
+
+void LightBvh::child_importance(uint32_t node, Vec3 p, Vec3 n, float out[4]) const {
+    importance4(m_nodes[node], p, n).store(out);
 }
 
 std::optional<std::pair<uint32_t, float>> LightBvh::sample(Vec3 p, Vec3 n, float u) const {
     if (m_nodes.empty()) return std::nullopt;
     uint32_t i = 0;
     float pmf = 1;
-    while (!m_nodes[i].leaf) {
-        const auto [i0, i1] = child_importance(i, p, n);
-        if (!(i0 > 0) && !(i1 > 0)) return std::nullopt;
-        const float p0 = i0 / (i0 + i1), p1 = i1 / (i0 + i1);  // as pmf() computes them
-        // Reuse u for the rest of the descent, rescaled into the chosen interval.
-        if (u < p0) {
-            i = i + 1;
-            u = std::min(u / p0, kOneMinusEpsilon);
-            pmf *= p0;
-        } else {
-            i = m_nodes[i].index;
-            u = std::min((u - p0) / (1 - p0), kOneMinusEpsilon);
-            pmf *= p1;
+    for (;;) {
+        const Node& node = m_nodes[i];
+        alignas(16) float imp[4];
+        importance4(node, p, n).store(imp);
+        const float sum = sum4(imp);
+        if (!(sum > 0)) return std::nullopt;
+        // The slot whose share of sum holds u * sum; never one of importance 0, even when
+        // rounding leaves the running remainder past the last positive one.
+        float rest = u * sum;
+        int k = 0, last = -1;
+        for (; k < 4; ++k) {
+            if (!(imp[k] > 0)) continue;
+            last = k;
+            if (rest < imp[k]) break;
+            rest -= imp[k];
         }
+        if (k == 4) k = last, rest = imp[k] * kOneMinusEpsilon;
+        pmf *= imp[k] / sum;  // as pmf() computes it
+        // Reuse u for the rest of the descent, rescaled into the chosen interval.
+        u = std::min(rest / imp[k], kOneMinusEpsilon);
+        if (node.leaf_mask >> k & 1) return std::pair{node.child[k], pmf};
+        i = node.child[k];
     }
-    // A lone light at the root was never weighed against a sibling.
-    if (i == 0 && !(m_nodes[0].bounds.importance(p, n) > 0)) return std::nullopt;
-    return std::pair{m_nodes[i].index, pmf};
 }
 
 float LightBvh::pmf(Vec3 p, Vec3 n, uint32_t light) const {
@@ -146,20 +325,18 @@ float LightBvh::pmf(Vec3 p, Vec3 n, uint32_t light) const {
     uint64_t trail = m_trail[light];
     uint32_t i = 0;
     float pmf = 1;
-    while (!m_nodes[i].leaf) {
-        const auto [i0, i1] = child_importance(i, p, n);
-        if (!(i0 > 0) && !(i1 > 0)) return 0;
-        if (trail & 1) {
-            pmf *= i1 / (i0 + i1);
-            i = m_nodes[i].index;
-        } else {
-            pmf *= i0 / (i0 + i1);
-            i = i + 1;
-        }
-        trail >>= 1;
+    for (;;) {
+        const Node& node = m_nodes[i];
+        alignas(16) float imp[4];
+        importance4(node, p, n).store(imp);
+        const float sum = sum4(imp);
+        const int k = int(trail & 3);
+        if (!(sum > 0) || !(imp[k] > 0)) return 0;
+        pmf *= imp[k] / sum;
+        if (node.leaf_mask >> k & 1) return pmf;
+        i = node.child[k];
+        trail >>= 2;
     }
-    if (i == 0 && !(m_nodes[0].bounds.importance(p, n) > 0)) return 0;
-    return pmf;
 }
 
 }  // namespace penumbra

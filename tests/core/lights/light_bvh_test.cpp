@@ -242,5 +242,67 @@ TEST(LightSet, ManyEmitterIrradianceIsUnbiasedForEverySampler) {
         }
 }
 
+// The tree weighs a node's four children in one SIMD pass over precomputed bounds: every
+// light's lane must give what LightBounds::importance gives for its bounds, for one- and
+// two-sided emitters, Lambertian and spot-like spreads, receivers with and without a
+// normal, near and far (inside some boxes, too).
+TEST(LightBvh, SimdImportanceMatchesLightBounds) {
+    Rng rng(21);
+    std::vector<std::pair<uint32_t, LightBounds>> lights;
+    for (uint32_t i = 0; i < 40; ++i) {
+        LightBounds b;
+        const Vec3 c(4 * rng.next_float() - 2, 4 * rng.next_float() - 2, 4 * rng.next_float() - 2);
+        const Vec3 h(0.5f * rng.next_float(), 0.5f * rng.next_float(),
+                     i % 5 == 0 ? 0.0f : 0.5f * rng.next_float());
+        b.lo = c - h, b.hi = c + h;
+        b.phi = 0.1f + 10 * rng.next_float();
+        b.w = random_unit(rng);
+        b.cos_theta_o = i % 3 == 0 ? 1.0f : 1 - 2 * rng.next_float();
+        b.cos_theta_e = i % 4 == 0 ? std::cos(0.3f * rng.next_float()) : 0.0f;
+        b.two_sided = i % 2 == 1;
+        lights.emplace_back(i + 7, b);
+    }
+    const LightBvh bvh(lights);
+    int checked = 0, positive = 0;
+    for (const ShadingPoint& ref : receivers(200, 22)) {
+        for (uint32_t i = 0; i < bvh.node_count(); ++i) {
+            float imp[4];
+            bvh.child_importance(i, ref.p, ref.n, imp);
+            const LightBvh::Node& node = bvh.node(i);
+            for (int k = 0; k < 4; ++k) {
+                if (!(node.leaf_mask >> k & 1)) continue;
+                const float want = lights[node.child[k] - 7].second.importance(ref.p, ref.n);
+                EXPECT_NEAR(imp[k], want, 2e-4f * want + 1e-7f)
+                    << "light " << node.child[k] << " at " << ref.p.x << " " << ref.p.y << " "
+                    << ref.p.z;
+                ++checked;
+                positive += want > 0;
+            }
+        }
+    }
+    EXPECT_EQ(checked, 200 * 40);
+    EXPECT_GT(positive, checked / 4);
+    EXPECT_LT(positive, checked);  // some are cut off: the zero test is exercised
+}
+
+// A lone light is the root's only child: chosen with probability 1 where it can reach the
+// receiver, never behind it.
+TEST(LightBvh, LoneLight) {
+    LightBounds b;
+    b.lo = Vec3(-0.5f, -0.5f, 0), b.hi = Vec3(0.5f, 0.5f, 0);
+    b.phi = 2;
+    b.w = Vec3(0, 0, 1);
+    b.cos_theta_o = 1, b.cos_theta_e = 0;
+    const LightBvh bvh({{3, b}});
+    const auto s = bvh.sample(Vec3(0.1f, 0, 1), Vec3(0, 0, -1), 0.7f);
+    ASSERT_TRUE(s);
+    EXPECT_EQ(s->first, 3u);
+    EXPECT_EQ(s->second, 1.0f);
+    EXPECT_EQ(bvh.pmf(Vec3(0.1f, 0, 1), Vec3(0, 0, -1), 3), 1.0f);
+    EXPECT_FALSE(bvh.sample(Vec3(0.1f, 0, -1), Vec3(0, 0, 1), 0.7f));
+    EXPECT_EQ(bvh.pmf(Vec3(0.1f, 0, -1), Vec3(0, 0, 1), 3), 0.0f);
+    EXPECT_EQ(bvh.pmf(Vec3(0.1f, 0, 1), Vec3(0, 0, -1), 2), 0.0f);
+}
+
 }  // namespace
 }  // namespace penumbra
