@@ -29,9 +29,13 @@ Distribution1D::Distribution1D(const std::vector<float>& func) : m_func(func) {
     size_t guides = 1;
     while (guides < n) guides *= 2;
     m_guide.resize(guides);
-    for (size_t j = 0; j < guides; ++j)
-        m_guide[j] = static_cast<uint32_t>(
-            std::upper_bound(m_cdf.begin(), m_cdf.end(), float(j) / guides) - m_cdf.begin());
+    // upper_bound of each j / G in one sweep (both ascend): the first entry above it.
+    size_t k = 0;
+    for (size_t j = 0; j < guides; ++j) {
+        const float target = float(j) / guides;
+        while (k <= n && m_cdf[k] <= target) ++k;
+        m_guide[j] = static_cast<uint32_t>(k);
+    }
     m_guide_scale = float(guides);
 }
 
