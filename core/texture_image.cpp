@@ -60,6 +60,16 @@ const SrgbTable& srgb8_table() {
     static const SrgbTable t(255);
     return t;
 }
+// code * (1 / 255) for every 8-bit code, as linear() decodes non-colour channels.
+const float* unorm8_table() {
+    static const std::array<float, 256> t = [] {
+        std::array<float, 256> v{};
+        for (int i = 0; i < 256; ++i) v[size_t(i)] = float(i) * (1.0f / 255);
+        return v;
+    }();
+    return t.data();
+}
+
 const SrgbTable& srgb16_table() {
     static const SrgbTable t(65535);
     return t;
@@ -136,6 +146,10 @@ TextureImage::TextureImage(int width, int height, int channels, TexelFormat form
     switch (format) {
         case TexelFormat::U8:
             m_u8.resize(total);
+            for (int c = 0; c < channels; ++c) {
+                const bool colour = m_srgb && !((channels == 2 && c == 1) || (channels == 4 && c == 3));
+                m_u8_lut[c] = colour ? srgb8_table().decoded.data() : unorm8_table();
+            }
             break;
         case TexelFormat::U16:
             m_u16.resize(total);
@@ -225,8 +239,40 @@ void TextureImage::build_mips() {
     for (int level = 1; level < levels(); ++level) downsample(level);
 }
 
+Vec4 TextureImage::texel_u8(size_t i) const {
+    const uint8_t* p = &m_u8[i];
+    switch (m_channels) {
+        case 1: {
+            const float g = m_u8_lut[0][p[0]];
+            return {g, g, g, 1};
+        }
+        case 2: {
+            const float g = m_u8_lut[0][p[0]];
+            return {g, g, g, m_u8_lut[1][p[1]]};
+        }
+        case 3:
+            return {m_u8_lut[0][p[0]], m_u8_lut[1][p[1]], m_u8_lut[2][p[2]], 1};
+        default:
+            return {m_u8_lut[0][p[0]], m_u8_lut[1][p[1]], m_u8_lut[2][p[2]], m_u8_lut[3][p[3]]};
+    }
+}
+
+Vec4 TextureImage::bilinear(int level, int x0, int x1, int y0, int y1, float ax, float ay) const {
+    const Level& l = m_levels[size_t(level)];
+    const size_t c = size_t(m_channels), row0 = size_t(y0) * size_t(l.width),
+                 row1 = size_t(y1) * size_t(l.width);
+    const size_t i00 = l.offset + (row0 + size_t(x0)) * c, i10 = l.offset + (row0 + size_t(x1)) * c;
+    const size_t i01 = l.offset + (row1 + size_t(x0)) * c, i11 = l.offset + (row1 + size_t(x1)) * c;
+    if (m_format == TexelFormat::U8)
+        return texel_u8(i00) * ((1 - ax) * (1 - ay)) + texel_u8(i10) * (ax * (1 - ay)) +
+               texel_u8(i01) * ((1 - ax) * ay) + texel_u8(i11) * (ax * ay);
+    return texel(level, x0, y0) * ((1 - ax) * (1 - ay)) + texel(level, x1, y0) * (ax * (1 - ay)) +
+           texel(level, x0, y1) * ((1 - ax) * ay) + texel(level, x1, y1) * (ax * ay);
+}
+
 Vec4 TextureImage::texel(int level, int x, int y) const {
     const size_t i = index(level, x, y);
+    if (m_format == TexelFormat::U8) return texel_u8(i);
     switch (m_channels) {
         case 1: {
             const float g = linear(i, 0);

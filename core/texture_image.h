@@ -46,6 +46,10 @@ public:
     // Texel (x, y) of a level (in range), decoded to linear RGBA as Image::rgba reads
     // channels (gray fills RGB, missing alpha is 1). No working-space matrix.
     Vec4 texel(int level, int x, int y) const;
+    // The bilinear blend of texels (x0, y0), (x1, y0), (x0, y1), (x1, y1) of a level with
+    // weights (1 - ax)(1 - ay), ax (1 - ay), (1 - ax) ay, ax ay, summed in that order:
+    // texture lookups' inner loop, with the format's decoding chosen once for the four.
+    Vec4 bilinear(int level, int x0, int x1, int y0, int y1, float ax, float ay) const;
     // One level decoded to a linear float Image of the same channels (tests, previews).
     Image to_image(int level = 0) const;
     // The stored code of one channel (tests: precision and rounding).
@@ -72,6 +76,7 @@ private:
         return l.offset + (size_t(y) * size_t(l.width) + size_t(x)) * size_t(m_channels);
     }
     float linear(size_t i, int c) const;  // element i, channel c, decoded
+    Vec4 texel_u8(size_t i) const;         // texel at element i of an 8-bit store
     void store(size_t i, int c, float v);  // encoded to the nearest code
     void downsample(int level);           // level from level - 1
 
@@ -83,6 +88,9 @@ private:
     std::vector<uint16_t> m_u16;
     std::vector<float> m_f32;
     std::optional<Mat3> m_matrix;
+    // 8-bit stores: each channel's decoded value per code (the sRGB table or code / 255,
+    // the values linear() computes), so a fetch is one load a channel, no branches.
+    const float* m_u8_lut[4] = {nullptr, nullptr, nullptr, nullptr};
 };
 
 // The sRGB transfer (IEC 61966-2-1, with OCIO's continuous toe), decoded for every 8-bit

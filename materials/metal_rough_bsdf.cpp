@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "core/sampling/warp.h"
 #include "materials/fresnel.h"
@@ -241,7 +242,22 @@ Spectrum MetalRoughBsdf::specular_fresnel(float c) const {
     return fd * (1 - m_p.metallic) + fm * m_p.metallic;
 }
 
-Spectrum MetalRoughBsdf::diffuse_term(Vec3 wo, Vec3 wi, float cos_vh) const {
+const MetalRoughBsdf::WoTerms& MetalRoughBsdf::wo_terms(Vec3 wo) const {
+    uint32_t key[3];
+    std::memcpy(key, &wo, sizeof key);
+    if (m_wo.valid && key[0] == m_wo.key[0] && key[1] == m_wo.key[1] && key[2] == m_wo.key[2])
+        return m_wo;
+    std::memcpy(m_wo.key, key, sizeof key);
+    m_wo.valid = true;
+    // A metal has no base, a bare base no layer (and neither an albedo table: the
+    // constructor stops before it).
+    m_wo.transmittance = m_p.metallic >= 1 || m_lambert ? 1.0f : base_transmittance(wo);
+    m_wo.probability = m_lambert ? 0.0f : specular_probability(wo, m_wo.transmittance);
+    m_wo.lambda = m_delta ? 0.0f : m_dist.lambda(wo);
+    return m_wo;
+}
+
+Spectrum MetalRoughBsdf::diffuse_term(const WoTerms& t, Vec3 wi, float cos_vh) const {
     if (m_p.metallic >= 1) return Spectrum(0);
     float weight;
     if (m_p.layering == GltfLayering::Spec) {
@@ -250,18 +266,18 @@ Spectrum MetalRoughBsdf::diffuse_term(Vec3 wo, Vec3 wi, float cos_vh) const {
     } else {
         // What the layer leaves on the way in and on the way out, normalized so that
         // the base's cosine-weighted average of the second factor is 1.
-        weight = base_transmittance(wo) * base_transmittance(wi) * m_base_norm;
+        weight = t.transmittance * base_transmittance(wi) * m_base_norm;
     }
     return m_p.base_color * ((1 - m_p.metallic) * std::max(0.0f, weight) * kInvPi);
 }
 
-float MetalRoughBsdf::specular_probability(Vec3 wo) const {
+float MetalRoughBsdf::specular_probability(Vec3 wo, float transmittance) const {
     // Lobe weights from the albedo each lobe would have at normal-ish incidence; any
     // positive choice keeps the estimator unbiased, this one keeps variance low.
     const float spec = luminance(specular_fresnel(wo.z));
     const float diff = m_p.metallic >= 1 ? 0.0f
                                          : luminance(m_p.base_color) * (1 - m_p.metallic) *
-                                               std::max(0.0f, base_transmittance(wo));
+                                               std::max(0.0f, transmittance);
     const float total = spec + diff;
     if (!(total > 0)) return 0;
     return std::clamp(spec / total, 0.0f, 1.0f);
@@ -273,35 +289,68 @@ Spectrum MetalRoughBsdf::eval(Vec3 wo, Vec3 wi, Transport) const {
     Vec3 h = wo + wi;
     if (length_squared(h) == 0) return Spectrum(0);
     h = normalize(h);
+    const WoTerms& t = wo_terms(wo);
     const float vh = std::max(0.0f, dot(wo, h));
-    Spectrum f = diffuse_term(wo, wi, vh);
+    Spectrum f = diffuse_term(t, wi, vh);
     if (!m_delta) {
-        const float spec = m_dist.D(h) * m_dist.G(wo, wi) / (4 * wo.z * wi.z);
+        // G(wo, wi) = 1 / (1 + Lambda(wo) + Lambda(wi)), Lambda(wo) kept.
+        const float g = 1 / (1 + t.lambda + m_dist.lambda(wi));
+        const float spec = m_dist.D(h) * g / (4 * wo.z * wi.z);
         f += specular_fresnel(vh) * spec;
     }
     return f;
 }
 
-float MetalRoughBsdf::pdf_specular(Vec3 wo, Vec3 wi) const {
-    if (m_delta) return 0;
-    const Vec3 h = normalize(wo + wi);
+float MetalRoughBsdf::pdf_specular(const WoTerms& t, Vec3 wo, Vec3 h) const {
     const float woh = dot(wo, h);
     if (woh <= 0) return 0;
-    // Reflection maps h to wi with Jacobian 1 / (4 |wo.h|).
-    return m_dist.pdf_visible(wo, h) / (4 * woh);
+    // Visible normals' density G1(wo) (wo.h) D(h) / wo.z; reflection maps h to wi with
+    // Jacobian 1 / (4 |wo.h|).
+    const float g1 = 1 / (1 + t.lambda);
+    return g1 * woh * m_dist.D(h) / wo.z / (4 * woh);
 }
 
 float MetalRoughBsdf::pdf(Vec3 wo, Vec3 wi, Transport) const {
     if (wo.z <= 0 || wi.z <= 0) return 0;
     if (m_lambert) return cosine_hemisphere_pdf(wi);
-    const float ps = specular_probability(wo);
-    return ps * pdf_specular(wo, wi) + (1 - ps) * cosine_hemisphere_pdf(wi);
+    const WoTerms& t = wo_terms(wo);
+    const float ps = t.probability;
+    const float spec = m_delta ? 0.0f : pdf_specular(t, wo, normalize(wo + wi));
+    return ps * spec + (1 - ps) * cosine_hemisphere_pdf(wi);
+}
+
+Spectrum MetalRoughBsdf::eval_pdf(const WoTerms& t, Vec3 wo, Vec3 wi, float* pdf) const {
+    if (m_lambert) {
+        *pdf = cosine_hemisphere_pdf(wi);
+        return m_p.base_color * kInvPi;
+    }
+    Vec3 h = wo + wi;
+    if (length_squared(h) == 0) {
+        *pdf = this->pdf(wo, wi, Transport::Radiance);
+        return Spectrum(0);
+    }
+    h = normalize(h);
+    const float ps = t.probability;
+    const float vh = std::max(0.0f, dot(wo, h));
+    Spectrum f = diffuse_term(t, wi, vh);
+    float spec_pdf = 0;
+    if (!m_delta) {
+        // eval()'s and pdf_specular()'s expressions, with D(h) once.
+        const float d = m_dist.D(h);
+        const float g = 1 / (1 + t.lambda + m_dist.lambda(wi));
+        f += specular_fresnel(vh) * (d * g / (4 * wo.z * wi.z));
+        const float woh = dot(wo, h);
+        if (woh > 0) spec_pdf = 1 / (1 + t.lambda) * woh * d / wo.z / (4 * woh);
+    }
+    *pdf = ps * spec_pdf + (1 - ps) * cosine_hemisphere_pdf(wi);
+    return f;
 }
 
 std::optional<BsdfSample> MetalRoughBsdf::sample(Vec3 wo, float u_lobe, Vec2 u,
-                                                 Transport mode) const {
+                                                 Transport) const {
     if (wo.z <= 0) return std::nullopt;
-    const float ps = m_lambert ? 0.0f : specular_probability(wo);
+    const WoTerms& t = wo_terms(wo);
+    const float ps = t.probability;
     if (u_lobe < ps) {
         if (m_delta) {
             const Vec3 wi(-wo.x, -wo.y, wo.z);
@@ -311,15 +360,17 @@ std::optional<BsdfSample> MetalRoughBsdf::sample(Vec3 wo, float u_lobe, Vec2 u,
         const Vec3 h = m_dist.sample_visible(wo, u);
         const Vec3 wi = reflect(wo, h);
         if (wi.z <= 0) return std::nullopt;
-        const float pdf_value = pdf(wo, wi, mode);
+        float pdf_value;
+        const Spectrum f = eval_pdf(t, wo, wi, &pdf_value);
         if (!(pdf_value > 0)) return std::nullopt;
-        return BsdfSample{wi, eval(wo, wi, mode), pdf_value, Lobe::Glossy, 1};
+        return BsdfSample{wi, f, pdf_value, Lobe::Glossy, 1};
     }
     const Vec3 wi = square_to_cosine_hemisphere(u);
     if (wi.z <= 0) return std::nullopt;
-    const float pdf_value = pdf(wo, wi, mode);
+    float pdf_value;
+    const Spectrum f = eval_pdf(t, wo, wi, &pdf_value);
     if (!(pdf_value > 0)) return std::nullopt;
-    return BsdfSample{wi, eval(wo, wi, mode), pdf_value, Lobe::Diffuse, 1};
+    return BsdfSample{wi, f, pdf_value, Lobe::Diffuse, 1};
 }
 
 }  // namespace penumbra

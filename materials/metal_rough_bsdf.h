@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 
 #include "materials/anisotropy_albedo.h"
 #include "materials/bsdf.h"
@@ -63,12 +64,32 @@ public:
     bool has_specular() const override { return m_delta; }
 
 private:
+    // The terms that depend on wo alone. An integrator asks about one wo per shading
+    // point, several times: the light sample's eval and pdf, then sample(), whose pdf
+    // and eval ask again; on scenes/glossy.gltf that was 5 albedo-table lookups of
+    // 1 - E(wo) and 3 Fresnel evaluations per bounce for what one gives.
+    struct WoTerms {
+        uint32_t key[3] = {0, 0, 0};  // wo's bits (an exact match; NaN never matches)
+        bool valid = false;
+        float transmittance = 1;      // base_transmittance(wo), where a base exists
+        float probability = 0;        // specular_probability(wo)
+        float lambda = 0;             // Smith Lambda(wo) of a rough lobe
+    };
+    const WoTerms& wo_terms(Vec3 wo) const;
+    // Probability of choosing the specular lobe for wo, given base_transmittance(wo).
+    float specular_probability(Vec3 wo, float transmittance) const;
+    // The base's BRDF value; cos_vh only matters to the spec's layering.
+    Spectrum diffuse_term(const WoTerms& t, Vec3 wi, float cos_vh) const;
+    // The specular lobe's density of the wi whose half vector is h (rough lobes).
+    float pdf_specular(const WoTerms& t, Vec3 wo, Vec3 h) const;
+    // eval and pdf of one (wo, wi) with wo.z > 0 and wi.z > 0, sharing the half vector
+    // and D(h): what sample() returns with its direction.
+    Spectrum eval_pdf(const WoTerms& t, Vec3 wo, Vec3 wi, float* pdf) const;
+
     // Mixed Fresnel of the dielectric and metal layers at cos(theta) = c.
     Spectrum specular_fresnel(float c) const;
     // The dielectric layer's Fresnel alone (with its film).
     Spectrum dielectric_fresnel(float c) const;
-    // The base's BRDF value; cos_vh only matters to the spec's layering.
-    Spectrum diffuse_term(Vec3 wo, Vec3 wi, float cos_vh) const;
     // The fraction of light towards w that the dielectric's specular layer leaves to the
     // base: 1 - E(w) (AlbedoScaled) or 1 - F(w.z) (Spec), scalar as the spec's
     // max_value(F) (KHR_materials_specular).
@@ -79,9 +100,6 @@ private:
     float layer_f0(float mu) const;
     // E_avg of the layering with a film, by quadrature over the hemisphere.
     float film_average_albedo() const;
-    // Probability of choosing the specular lobe for this wo.
-    float specular_probability(Vec3 wo) const;
-    float pdf_specular(Vec3 wo, Vec3 wi) const;
 
     MetalRoughParams m_p;
     MicrofacetDistribution m_dist;
@@ -98,6 +116,9 @@ private:
     SpecularAlbedo m_albedo;  // AlbedoScaled, rough lobes only
     AnisotropicSpecularAlbedo m_aniso_albedo;  // the same for anisotropic lobes
     float m_base_norm = 1;    // AlbedoScaled: 1 / (1 - E_avg)
+    // The last wo's terms: filled by the first call that needs them. The object lives in
+    // one thread's ShadingData, so const methods may keep it.
+    mutable WoTerms m_wo;
 };
 
 }  // namespace penumbra

@@ -18,6 +18,9 @@ EnvironmentLight::EnvironmentLight(Image image, float intensity, float rotation_
     m_sin_rot = std::sin(r);
     const int w = m_image.width, h = m_image.height;
     std::vector<float> func(size_t(w) * h);
+    m_radiance.resize(size_t(w) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) m_radiance[size_t(y) * w + x] = m_image.rgba(x, y).xyz() * m_scale;
     for (int y = 0; y < h; ++y) {
         const float sin_theta = std::sin(kPi * (y + 0.5f) / h);
         for (int x = 0; x < w; ++x)
@@ -45,13 +48,23 @@ Vec3 EnvironmentLight::uv_to_direction(Vec2 uv) const {
     return {m_cos_rot * x + m_sin_rot * z, y, -m_sin_rot * x + m_cos_rot * z};
 }
 
-Spectrum EnvironmentLight::Le(Vec3 w) const {
-    if (m_image.width == 0) return m_constant;
-    const Vec2 uv = direction_to_uv(w);
+Spectrum EnvironmentLight::texel_radiance(Vec2 uv) const {
     const int x = std::min(static_cast<int>(uv.x * m_image.width), m_image.width - 1);
     const int y = std::min(static_cast<int>(uv.y * m_image.height), m_image.height - 1);
     // Nearest texel: the same piecewise-constant function the sampler's pdf follows.
-    return m_image.rgba(x, y).xyz() * m_scale;
+    return m_radiance[size_t(y) * m_image.width + x];
+}
+
+float EnvironmentLight::uv_pdf(Vec2 uv) const {
+    // Jacobian of (u, v) -> direction: 2 pi^2 sin(theta).
+    const float sin_theta = std::sin(uv.y * kPi);
+    if (!(sin_theta > 0)) return 0;
+    return m_dist.pdf(uv) / (2 * kPi * kPi * sin_theta);
+}
+
+Spectrum EnvironmentLight::Le(Vec3 w) const {
+    if (m_image.width == 0) return m_constant;
+    return texel_radiance(direction_to_uv(w));
 }
 
 std::optional<LightSample> EnvironmentLight::sample_Li(const ShadingPoint&, Vec2 u,
@@ -67,19 +80,17 @@ std::optional<LightSample> EnvironmentLight::sample_Li(const ShadingPoint&, Vec2
     if (!(pdf_uv > 0)) return std::nullopt;
     const Vec3 wi = uv_to_direction(uv);
     // The density as pdf_Li reports it for wi, so that MIS sees one consistent value
-    // even where float round-off moves wi across a texel edge.
-    const float pdf = pdf_Li(ShadingPoint{}, wi, 0);
+    // even where float round-off moves wi across a texel edge; Le from the same (u, v)
+    // (one atan2 pair, not two).
+    const Vec2 uv_wi = direction_to_uv(wi);
+    const float pdf = uv_pdf(uv_wi);
     if (!(pdf > 0) || !std::isfinite(pdf)) return std::nullopt;
-    return LightSample{Le(wi), wi, inf, pdf, false};
+    return LightSample{texel_radiance(uv_wi), wi, inf, pdf, false};
 }
 
 float EnvironmentLight::pdf_Li(const ShadingPoint&, Vec3 wi, float) const {
     if (m_image.width == 0) return is_black(m_constant) ? 0.0f : uniform_sphere_pdf();
-    const Vec2 uv = direction_to_uv(wi);
-    // Jacobian of (u, v) -> direction: 2 pi^2 sin(theta).
-    const float sin_theta = std::sin(uv.y * kPi);
-    if (!(sin_theta > 0)) return 0;
-    return m_dist.pdf(uv) / (2 * kPi * kPi * sin_theta);
+    return uv_pdf(direction_to_uv(wi));
 }
 
 float EnvironmentLight::power() const {

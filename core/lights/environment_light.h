@@ -33,8 +33,15 @@ public:
     Vec3 uv_to_direction(Vec2 uv) const;
 
 private:
+    // Le and pdf_Li at the image coordinates of a direction (image maps only).
+    Spectrum texel_radiance(Vec2 uv) const;
+    float uv_pdf(Vec2 uv) const;
+
     Spectrum m_constant;
     Image m_image;
+    // The image's RGB times the intensity, the values Le returns, packed: Le reads 12
+    // bytes instead of going through Image::rgba's switch on the channel count.
+    std::vector<Spectrum> m_radiance;
     float m_scale = 1;
     float m_cos_rot = 1, m_sin_rot = 0;
     float m_radius;

@@ -3,6 +3,7 @@
 // keeps stratification of the input, unlike the alias method.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "core/math/vec.h"
@@ -22,6 +23,15 @@ public:
 
 private:
     std::vector<float> m_func, m_cdf;
+    // m_func[i] / m_integral, the density of bin i (the same division, made once).
+    std::vector<float> m_pdf;
+    // Guide table (Chen & Asau 1974): m_guide[j] is the bin that upper_bound finds for
+    // u = j / G, G a power of two, so a u in [j / G, (j + 1) / G) starts its search
+    // there and walks on, on average n / G CDF entries, instead of a binary search over
+    // all of them (log2 n dependent, mispredicted branches: 4% of the helmet scene's
+    // profile). The result is upper_bound's, exactly.
+    std::vector<uint32_t> m_guide;
+    float m_guide_scale = 0;  // G
     float m_integral = 0;
 };
 

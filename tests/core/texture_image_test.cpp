@@ -104,6 +104,62 @@ TEST(TextureImage, SrgbLevelsAverageLinearValues) {
     EXPECT_FLOAT_EQ(a.texel(0, 0, 0).w, 128.0f / 255);
 }
 
+// Every 8-bit code decodes to the sRGB table's value in colour channels and to
+// code * (1 / 255) in alpha and non-colour textures, for 1-4 channels; bilinear() is
+// the four texels' blend in its documented order, bit for bit, in every format.
+TEST(TextureImage, TexelsDecodeAndBilinearBlendsThem) {
+    for (const TexelFormat format : {TexelFormat::U8, TexelFormat::U16, TexelFormat::F32})
+        for (const bool srgb : {true, false})
+            for (int channels = 1; channels <= 4; ++channels) {
+                SCOPED_TRACE(std::to_string(int(format)) + " " + std::to_string(srgb) + " " +
+                             std::to_string(channels));
+                const int w = 256, h = 3;
+                TextureImage t(w, h, channels, format, srgb);
+                Rng rng(11);
+                const size_t n = size_t(w) * h * channels;
+                for (size_t i = 0; i < n; ++i) {
+                    if (format == TexelFormat::U8)
+                        static_cast<uint8_t*>(t.level0_data())[i] = uint8_t(i / channels % 256);
+                    else if (format == TexelFormat::U16)
+                        static_cast<uint16_t*>(t.level0_data())[i] = uint16_t(rng.next_below(65536));
+                    else
+                        static_cast<float*>(t.level0_data())[i] = rng.next_float();
+                }
+                t.build_mips();
+                if (format == TexelFormat::U8) {
+                    for (int code = 0; code < 256; ++code) {
+                        const Vec4 v = t.texel(0, code, 0);
+                        const float c0 = srgb ? srgb8_to_linear(uint8_t(code))
+                                                : float(code) * (1.0f / 255);
+                        ASSERT_EQ(v.x, c0) << code;
+                        ASSERT_EQ(v.y, c0) << code;  // gray fill, or the same code
+                        ASSERT_EQ(v.z, c0) << code;
+                        const float alpha = float(code) * (1.0f / 255);
+                        const float want_w = channels == 2 || channels == 4 ? alpha : 1.0f;
+                        ASSERT_EQ(v.w, want_w) << code;
+                    }
+                }
+                for (int level = 0; level < t.levels(); ++level)
+                    for (int k = 0; k < 50; ++k) {
+                        const int lw = t.width(level), lh = t.height(level);
+                        const int x0 = int(rng.next_below(uint32_t(lw))),
+                                  x1 = int(rng.next_below(uint32_t(lw)));
+                        const int y0 = int(rng.next_below(uint32_t(lh))),
+                                  y1 = int(rng.next_below(uint32_t(lh)));
+                        const float ax = rng.next_float(), ay = rng.next_float();
+                        const Vec4 want = t.texel(level, x0, y0) * ((1 - ax) * (1 - ay)) +
+                                          t.texel(level, x1, y0) * (ax * (1 - ay)) +
+                                          t.texel(level, x0, y1) * ((1 - ax) * ay) +
+                                          t.texel(level, x1, y1) * (ax * ay);
+                        const Vec4 got = t.bilinear(level, x0, x1, y0, y1, ax, ay);
+                        ASSERT_EQ(got.x, want.x);
+                        ASSERT_EQ(got.y, want.y);
+                        ASSERT_EQ(got.z, want.z);
+                        ASSERT_EQ(got.w, want.w);
+                    }
+            }
+}
+
 // 8-bit levels (sRGB and linear, the 2 x 2 fast path and odd sizes' general taps) hold
 // the code whose decoded value is nearest the linear box average, found here by
 // trying all 256.
