@@ -2,6 +2,11 @@
 // accelerator's Hit goes through this one function, so only traversal differs.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/math/next_float.h"
 #include "core/math/vec.h"
 #include "core/ray.h"
 #include "core/scene/scene.h"
@@ -45,6 +50,12 @@ SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& h
 // they are). n0..n2 need not be unit length; zero ones leave p as it is.
 Vec3 smooth_surface_point(Vec3 p, const Vec3 v[3], const Vec3 n[3], const float b[3]);
 
+// Bounds on float rounding (pbrt-v4, section 6.8.1): n operations, unit roundoff u.
+constexpr float rounding_gamma(int n) {
+    constexpr float u = std::numeric_limits<float>::epsilon() * 0.5f;
+    return n * u / (1 - n * u);
+}
+
 // Origin for a ray leaving p on the side of n that w points to: p pushed along the
 // geometric normal by an offset that scales with |p|, so that the new ray does not hit
 // the surface it leaves (self-intersection "acne").
@@ -54,11 +65,56 @@ Vec3 offset_ray_origin(Vec3 p, Vec3 ng, Vec3 w);
 // safety factor of 4), then rounded away from p (pbrt-v4's OffsetRayOrigin): a ray from
 // there cannot hit the surface it leaves, and the offset is a few ULPs of the
 // coordinates along n only, so contact shadows stay put far from the origin.
-Vec3 offset_ray_origin(Vec3 p, Vec3 p_error, Vec3 n, Vec3 w);
+inline Vec3 offset_ray_origin(Vec3 p, Vec3 p_error, Vec3 n, Vec3 w) {
+    // Safety factor 4: the accelerators move the origin into instance space, which
+    // rounds about as much again as p_error covers. The error bound is 0 along an axis
+    // where every term is 0 (a plane y = 0), but the accelerators' arithmetic is not
+    // exact: never less than gamma(3) of the largest coordinate (about 1.5 ULPs), nor a
+    // tiny absolute floor.
+    const float scale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    const float spread = std::abs(n.x) * p_error.x + std::abs(n.y) * p_error.y +
+                         std::abs(n.z) * p_error.z;  // dot(|n|, p_error)
+    const float d = 4 * std::max({spread, rounding_gamma(3) * scale, 1e-20f});
+    const Vec3 side = dot(w, n) < 0 ? -n : n;
+    Vec3 po = p + side * d;
+    // The addition rounds too: step each coordinate one float further along the normal.
+    for (int i = 0; i < 3; ++i) {
+        if (side[i] > 0) po[i] = next_float_up(po[i]);
+        else if (side[i] < 0) po[i] = next_float_down(po[i]);
+    }
+    return po;
+}
 
 // A ray from p (p_smooth when w leaves on the side of ns) towards a point at distance dist
 // along unit w, stopping short of it.
-Ray spawn_ray(const SurfacePoint& sp, Vec3 w, float dist, float time);
+// Inline, as offset_ray_origin: the caller reads the ray at once, and a ray returned
+// through memory stalled on store forwarding (a 16-byte load of 4-byte stores).
+inline Ray spawn_ray(const SurfacePoint& sp, Vec3 w, float dist, float time) {
+    Ray r;
+    // The side a ray leaves on is decided by the interpolated normal sp.ns (as the file
+    // gives it, with sp.ng turned to its side), as the integrators' side tests are: a
+    // ray the facet's plane puts on the other side then starts above the facet and is
+    // stopped by it unless the lifted origin clears the facet (a convex coarse mesh),
+    // so it cannot leak through a sheet.
+    const bool outside = dot(w, sp.ns) > 0;
+    r.o = offset_ray_origin(outside ? sp.p_smooth : sp.p, sp.p_error, sp.ng,
+                            outside ? sp.ng : -sp.ng);
+    r.d = w;
+    r.tmin = 0;
+    r.tmax = std::numeric_limits<float>::infinity();
+    if (std::isfinite(dist)) {
+        // A shadow ray to a point: aimed from the moved origin at the point itself
+        // (pbrt-v4's SpawnRayTo). Kept parallel to w, a lifted origin would carry the
+        // segment's end past the point, into the area light sampled there, which then
+        // blocks its own light (a smooth sphere under a panel lost 60% of its direct light).
+        const Vec3 to = sp.p + w * dist - r.o;
+        const float len = length(to);
+        r.d = len > 0 ? to / len : w;
+        r.tmax = len * (1 - 1e-4f);
+    }
+    r.time = time;
+    return r;
+}
 
 // The normal that decides on which side of the surface a direction lies (light and
 // BSDF samples whose lobe side disagrees with it are dropped): the interpolated normal

@@ -12,7 +12,7 @@
 
 namespace penumbra {
 
-const Bsdf* BsdfStorage::get() const {
+const Bsdf* BsdfStorage::held() const {
     return std::visit(
         [](const auto& b) -> const Bsdf* {
             if constexpr (std::is_base_of_v<Bsdf, std::decay_t<decltype(b)>>) return &b;
@@ -120,6 +120,8 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
         return sd;
     }
 
+    // What only the specular lobes read (roughness, the specular colour) is finished
+    // after the Lambertian case has returned: most hits of a diffuse scene stop there.
     float metallic = m.metallic, roughness = m.roughness;
     Spectrum specular_color = m.specular_color;
     float specular = m.specular;
@@ -140,11 +142,13 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
         metallic *= mr.z;
     }
     metallic = std::clamp(metallic, 0.0f, 1.0f);
-    roughness = std::clamp(std::max(roughness, options.min_roughness), 0.0f, 1.0f);
 
-    // Single-sided emitters (doubleSided false) emit from the glTF front face only.
-    if (emits_towards(m, front_normal(sp), wo))
-        sd.emission = emitted_radiance(scene, m, sp.uv0, sp.uv1, sp.uv_width);
+    // Single-sided emitters (doubleSided false) emit from the glTF front face only. A
+    // black factor is the result as it stands (emitted_radiance reads no texture then).
+    if (emits_towards(m, front_normal(sp), wo)) {
+        const Spectrum e = m.emissive * m.emissive_strength;
+        sd.emission = is_black(e) ? e : emitted_radiance(scene, m, sp.uv0, sp.uv1, sp.uv_width);
+    }
 
     float transmission = m.transmission;
     if (transmission > 0 && m.transmission_texture.valid())
@@ -153,8 +157,6 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
 
     // KHR_materials_specular's textures: A scales the factor, RGB the colour.
     if (m.specular_texture.valid()) specular *= sample_texture(scene, m.specular_texture, sp).w;
-    if (m.specular_color_texture.valid())
-        specular_color = specular_color * sample_texture(scene, m.specular_color_texture, sp).xyz();
     specular = std::clamp(specular, 0.0f, 1.0f);
 
     // The layers, each only where it is active.
@@ -179,6 +181,9 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
         sd.bsdf.emplace(LambertianBsdf(sd.base_color));
         return sd;
     }
+    roughness = std::clamp(std::max(roughness, options.min_roughness), 0.0f, 1.0f);
+    if (m.specular_color_texture.valid())
+        specular_color = specular_color * sample_texture(scene, m.specular_color_texture, sp).xyz();
     MetalRoughParams p;
     p.base_color = sd.base_color;
     p.metallic = metallic;

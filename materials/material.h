@@ -19,16 +19,28 @@
 namespace penumbra {
 
 // Holds whichever model the material turned into, without a heap allocation per hit.
+// The model is also kept as a pointer, so that the integrators' BSDF calls (one per light
+// sample and bounce) do not each go through std::visit; a copy points into its own storage.
 class BsdfStorage {
 public:
+    BsdfStorage() = default;
+    BsdfStorage(const BsdfStorage& o) : m_v(o.m_v), m_bsdf(o.m_bsdf ? held() : nullptr) {}
+    BsdfStorage& operator=(const BsdfStorage& o) {
+        m_v = o.m_v;
+        m_bsdf = o.m_bsdf ? held() : nullptr;
+        return *this;
+    }
     template <typename T>
-    void emplace(const T& bsdf) { m_v = bsdf; }
-    const Bsdf* get() const;
+    void emplace(const T& bsdf) { m_bsdf = &m_v.template emplace<T>(bsdf); }
+    // Null before emplace.
+    const Bsdf* get() const { return m_bsdf; }
 
 private:
+    const Bsdf* held() const;  // the alternative m_v holds (std::visit)
     std::variant<std::monostate, LambertianBsdf, OrenNayarBsdf, MetalRoughBsdf,
                  GltfTransmissionBsdf, DielectricBsdf, ConductorBsdf, CookTorranceBsdf, GltfBsdf>
         m_v;
+    const Bsdf* m_bsdf = nullptr;
 };
 
 struct ShadingData {
