@@ -45,6 +45,7 @@ BENCHMARK_CAPTURE(BM_SamplerDimensions, independent, SamplerType::Independent)->
 BENCHMARK_CAPTURE(BM_SamplerDimensions, stratified, SamplerType::Stratified)->Arg(1)->Arg(64);
 BENCHMARK_CAPTURE(BM_SamplerDimensions, sobol, SamplerType::Sobol)->Arg(1)->Arg(64);
 BENCHMARK_CAPTURE(BM_SamplerDimensions, zsobol, SamplerType::ZSobol)->Arg(1)->Arg(64);
+BENCHMARK_CAPTURE(BM_SamplerDimensions, tabled_sobol, SamplerType::TabledSobol)->Arg(1)->Arg(64);
 
 void BM_SpecularAlbedoAt(benchmark::State& state) {
     const SpecularAlbedo albedo(MicrofacetType::Ggx, 0.3f);

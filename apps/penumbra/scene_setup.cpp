@@ -58,7 +58,7 @@ void add_image_options(CLI::App* cmd, RenderCommandOptions& o) {
         ->check(CLI::IsMember(integrator_list));
     cmd->add_option("--sampler", o.sampler, "Pixel sampler")
         ->capture_default_str()
-        ->check(CLI::IsMember({"independent", "stratified", "sobol", "zsobol"}));
+        ->check(CLI::IsMember({"independent", "stratified", "sobol", "zsobol", "tabled-sobol"}));
     cmd->add_option("--filter", o.filter, "Pixel reconstruction filter")
         ->capture_default_str()
         ->check(CLI::IsMember({"box", "gaussian", "blackman-harris"}));

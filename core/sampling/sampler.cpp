@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/sampling/hash.h"
+#include "core/sampling/tabled_sobol_sampler.h"
 #include "core/sampling/zsobol_sampler.h"
 
 namespace penumbra {
@@ -147,6 +148,9 @@ std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t s
             return std::make_unique<SobolSampler>(spp, seed);
         case SamplerType::ZSobol:
             return std::make_unique<ZSobolSampler>(spp, seed);
+        case SamplerType::TabledSobol:
+            if (tabled_sobol_supports(spp)) return std::make_unique<TabledSobolSampler>(spp, seed);
+            return std::make_unique<StratifiedSampler>(spp, seed);
     }
     throw std::invalid_argument("unknown sampler type");
 }
@@ -156,8 +160,10 @@ SamplerType parse_sampler_type(const std::string& name) {
     if (name == "stratified") return SamplerType::Stratified;
     if (name == "sobol") return SamplerType::Sobol;
     if (name == "zsobol") return SamplerType::ZSobol;
-    throw std::invalid_argument("unknown sampler '" + name +
-                                "' (expected independent, stratified, sobol or zsobol)");
+    if (name == "tabled-sobol") return SamplerType::TabledSobol;
+    throw std::invalid_argument(
+        "unknown sampler '" + name +
+        "' (expected independent, stratified, sobol, zsobol or tabled-sobol)");
 }
 
 }  // namespace penumbra

@@ -111,9 +111,12 @@ uint32_t sobol_second_dimension_bits(uint32_t i);
 // Owen scrambling of a 32-bit fraction (Burley 2020's nested uniform scramble).
 uint32_t owen_scramble(uint32_t v, uint32_t seed);
 
-enum class SamplerType { Independent, Stratified, Sobol, ZSobol };
+enum class SamplerType { Independent, Stratified, Sobol, ZSobol, TabledSobol };
+// TabledSobol takes power-of-two spp (up to 2^16); for others it gives the stratified
+// sampler.
 std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t seed);
-// "independent" | "stratified" | "sobol" | "zsobol"; throws std::invalid_argument otherwise.
+// "independent" | "stratified" | "sobol" | "zsobol" | "tabled-sobol"; throws
+// std::invalid_argument otherwise.
 SamplerType parse_sampler_type(const std::string& name);
 
 }  // namespace penumbra

@@ -79,7 +79,8 @@ TEST(PathIntegrator, FurnaceBoxRadianceIsEmissionOverOneMinusAlbedo) {
     for (LightStrategy strategy :
          {LightStrategy::Mis, LightStrategy::BsdfOnly, LightStrategy::LightOnly}) {
         for (SamplerType type : {SamplerType::Independent, SamplerType::Stratified,
-                                 SamplerType::Sobol, SamplerType::ZSobol}) {
+                                 SamplerType::Sobol, SamplerType::ZSobol,
+                                 SamplerType::TabledSobol}) {
             IntegratorOptions opt;
             opt.max_depth = 200;
             opt.strategy = strategy;

@@ -32,7 +32,7 @@ Scene cube_on_floor() {
 }
 
 // Per quadrant of the image, the mean luminance over seeds (independent replicates).
-TEST(RenderSamplers, ZSobolAndSobolAgreeWithIndependentSampling) {
+TEST(RenderSamplers, LowDiscrepancySamplersAgreeWithIndependentSampling) {
     const Scene scene = cube_on_floor();
     EmbreeAccel accel(scene);
     const LightSet lights(scene, nullptr);
@@ -63,7 +63,7 @@ TEST(RenderSamplers, ZSobolAndSobolAgreeWithIndependentSampling) {
         return q;
     };
     const auto reference = quadrants(SamplerType::Independent);
-    for (SamplerType type : {SamplerType::ZSobol, SamplerType::Sobol}) {
+    for (SamplerType type : {SamplerType::ZSobol, SamplerType::Sobol, SamplerType::TabledSobol}) {
         const auto q = quadrants(type);
         for (int k = 0; k < 4; ++k) {
             const double se = std::hypot(q[k].std_error, reference[k].std_error);

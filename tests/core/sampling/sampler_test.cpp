@@ -125,12 +125,14 @@ TEST_P(SamplerTypes, MomentsAreUniform) {
 
 INSTANTIATE_TEST_SUITE_P(, SamplerTypes,
                          ::testing::Values(SamplerType::Independent, SamplerType::Stratified,
-                                           SamplerType::Sobol, SamplerType::ZSobol));
+                                           SamplerType::Sobol, SamplerType::ZSobol,
+                                           SamplerType::TabledSobol));
 
 TEST(Sampler, ParseAndMake) {
     EXPECT_EQ(parse_sampler_type("independent"), SamplerType::Independent);
     EXPECT_EQ(parse_sampler_type("stratified"), SamplerType::Stratified);
     EXPECT_EQ(parse_sampler_type("zsobol"), SamplerType::ZSobol);
+    EXPECT_EQ(parse_sampler_type("tabled-sobol"), SamplerType::TabledSobol);
     EXPECT_THROW(parse_sampler_type("halton-ish"), std::invalid_argument);
     EXPECT_EQ(make_sampler(SamplerType::Stratified, 12, 0)->samples_per_pixel(), 12u);
 }
