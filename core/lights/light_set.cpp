@@ -123,19 +123,13 @@ std::optional<SampledLight> LightSet::sample(const ShadingPoint& ref, float u) c
     return SampledLight{m_lights[chosen->first], (1 - m_p_beside) * chosen->second};
 }
 
-std::optional<SampledLight> LightSet::sample_remapped(float u, float* u_remapped) const {
+std::optional<SampledLight> LightSet::sample_uniform_remapped(float u, float* u_remapped) const {
     CHECK(remaps_choice());
-    if (m_type == LightSamplerType::Uniform) {
-        if (m_lights.empty()) return std::nullopt;
-        const size_t n = m_lights.size();
-        const size_t i = std::min(size_t(u * n), n - 1);
-        *u_remapped = std::min(u * n - float(i), kOneMinusEpsilon);
-        return SampledLight{m_lights[i], 1.0f / n};
-    }
-    if (m_alias.empty()) return std::nullopt;
-    float pmf;
-    const uint32_t i = m_alias.sample(u, &pmf, u_remapped);
-    return SampledLight{m_lights[i], pmf};
+    if (m_lights.empty()) return std::nullopt;
+    const size_t n = m_lights.size();
+    const size_t i = std::min(size_t(u * n), n - 1);
+    *u_remapped = std::min(u * n - float(i), kOneMinusEpsilon);
+    return SampledLight{m_lights[i], 1.0f / n};
 }
 
 int64_t LightSet::index_of(const Light* light) const {

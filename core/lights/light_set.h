@@ -62,7 +62,14 @@ public:
     // light_distribution_sample), so that one sample coordinate both chooses the light
     // and places the point on it. The BVH's choice cannot: use sample(ref, u) there.
     bool remaps_choice() const { return m_type != LightSamplerType::Bvh; }
-    std::optional<SampledLight> sample_remapped(float u, float* u_remapped) const;
+    // Inline, with the alias table's sampling: it runs on every bounce.
+    std::optional<SampledLight> sample_remapped(float u, float* u_remapped) const {
+        if (m_type != LightSamplerType::Power) return sample_uniform_remapped(u, u_remapped);
+        if (m_alias.empty()) return std::nullopt;
+        float pmf;
+        const uint32_t i = m_alias.sample(u, &pmf, u_remapped);
+        return SampledLight{m_lights[i], pmf};
+    }
     // Probability that sample(ref, .) picks this light: the MIS weight of an emitter a
     // BSDF-sampled ray from ref hits needs it at the same ref.
     float pmf(const ShadingPoint& ref, const Light* light) const;
@@ -81,6 +88,8 @@ public:
     float beside_probability() const { return m_p_beside; }
 
 private:
+    // sample_remapped for the uniform choice (the BVH's cannot remap).
+    std::optional<SampledLight> sample_uniform_remapped(float u, float* u_remapped) const;
     // Index into m_lights, or -1. O(1) for the lights MIS asks about on every emissive
     // hit: triangle lights by their place in m_triangles, the environment last.
     int64_t index_of(const Light* light) const;

@@ -34,20 +34,11 @@ AliasTable::AliasTable(const std::vector<float>& weights) {
     // Leftovers are 1 up to rounding.
     for (uint32_t i : large) m_bins[i].q = 1, m_bins[i].alias = i;
     for (uint32_t i : small) m_bins[i].q = 1, m_bins[i].alias = i;
-}
-
-uint32_t AliasTable::sample(float u, float* pmf, float* u_remapped) const {
-    const float scaled = u * m_bins.size();
-    const uint32_t i = std::min(static_cast<uint32_t>(scaled), static_cast<uint32_t>(m_bins.size() - 1));
-    const float up = scaled - i;
-    const uint32_t chosen = up < m_bins[i].q ? i : m_bins[i].alias;
-    if (pmf) *pmf = m_bins[chosen].p;
-    if (u_remapped) {
-        // The alias branch only runs when q < 1 (up < 1 always).
-        const float q = m_bins[i].q;
-        *u_remapped = std::min(up < q ? up / q : (up - q) / (1 - q), 0x1.fffffep-1f);
-    }
-    return chosen;
+    m_size = static_cast<float>(n);
+    m_last = static_cast<uint32_t>(n - 1);
+    m_equal = std::all_of(m_bins.begin(), m_bins.end(), [&](const Bin& b) {
+        return b.q == 1 && b.alias == static_cast<uint32_t>(&b - m_bins.data());
+    });
 }
 
 }  // namespace penumbra
