@@ -9,7 +9,7 @@
 
 #include "core/error.h"
 #include "tests/support/chi2.h"
-#include "tests/support/estimate.h"
+#include "tests/support/sampler_checks.h"
 
 namespace penumbra {
 namespace {
@@ -219,34 +219,9 @@ TEST(ZSobolSampler, DimensionsAreUniformAndPairsIndependent) {
     EXPECT_EQ(tested + 12, tests);
 }
 
-// A render stopped early uses a prefix of each pixel's budget (RenderOptions::spp): the
-// first 5 of 64 samples must still be unbiased. Independent replicates are the seeds;
-// within one, pixels share one scrambled sequence, so they are not independent samples.
 TEST(ZSobolSampler, PrefixesOfTheBudgetAreUnbiased) {
-    // A corner of [0,1)^2 per pair, off the dyadic grid so stratification alone cannot
-    // make it exact: the mean of 1[x < 0.3] 1[y < 0.7] is 0.21.
-    for (uint32_t prefix : {1u, 5u, 64u}) {
-        const test::Estimate e = test::estimate(200, [&](uint64_t seed) {
-            ZSobolSampler s(64, 1000 + seed);
-            double sum = 0;
-            int count = 0;
-            for (int y = 0; y < 16; ++y)
-                for (int x = 0; x < 16; ++x)
-                    for (uint32_t i = 0; i < prefix; ++i) {
-                        s.start_pixel_sample({x, y}, i);
-                        for (int d = 0; d < 3; ++d) {
-                            const Vec2 v = s.get_2d();
-                            sum += (v.x < 0.3f) * (v.y < 0.7f);
-                            ++count;
-                        }
-                    }
-            return sum / count;
-        });
-        EXPECT_TRUE(test::within(e, 0.21))
-            << "prefix " << prefix << ": " << e.mean << " +- " << e.std_error;
-        // Power: a bias of 0.005 (2.4%) would be four standard errors.
-        EXPECT_LT(e.std_error, 0.00125) << "prefix " << prefix;
-    }
+    test::expect_unbiased_prefixes(
+        [](uint64_t seed) { return std::make_unique<ZSobolSampler>(64, seed); });
 }
 
 TEST(ZSobolSampler, IndicesBeyondTheBudgetAreRejected) {
