@@ -18,7 +18,8 @@ struct Frame {
     Image beauty, variance;
 };
 
-Frame render_with(const Scene& scene, const IntegratorOptions& iopt, int size, uint32_t spp) {
+Frame render_with(const Scene& scene, const IntegratorOptions& iopt, int size, uint32_t spp,
+                  uint64_t seed = 7) {
     EmbreeAccel accel(scene);
     const LightSet lights(scene, nullptr);
     const RenderContext ctx{scene, accel, lights};
@@ -26,7 +27,7 @@ Frame render_with(const Scene& scene, const IntegratorOptions& iopt, int size, u
     const auto integrator = make_integrator("path", iopt);
     RenderOptions opt;
     opt.spp = spp;
-    opt.seed = 7;
+    opt.seed = seed;
     opt.progress = false;
     opt.aovs = parse_aovs("variance");
     const Film film = render(ctx, *camera, *integrator, opt);
@@ -112,17 +113,41 @@ TEST(FireflyControl, RegularizationLowersTheCausticsVariance) {
     // The floor under the mirror sphere sees the panel only through it: diffuse ->
     // specular -> light paths that only BSDF sampling finds. Roughened after the first
     // diffuse bounce, NEE reaches the panel through the sphere.
-    // Measured ratio (regularized / plain) at 64 spp: 0.83-0.86 over seeds 7-9, 0.82-0.88
-    // at 256 spp; at 16 spp the estimate spreads from 0.72 to 0.95, too noisy to test.
-    // (A bound of 0.8 at 16 spp passed one seed before shadow rays from smooth-shaded
-    // points reached their lights, which changed the plain render's variance.)
+    // The statistic is the variance of the pixel's mean over independent seeds, which is
+    // what an image's error is, for any sampler: the spread of one pixel's samples (the
+    // variance AOV) is the integrand's variance, not the mean's under a low-discrepancy
+    // sampler, and its estimate from 64 heavy-tailed samples moved with the sampler (mean
+    // ratios 0.83 stratified, 0.91 tabled Sobol over seeds 1-8). Measured, 8 seeds of 64
+    // spp per group, four groups: 0.67-0.75 stratified, 0.69-0.76 tabled Sobol (0.78-0.85
+    // at 16 spp, where the caustic is a smaller share of the error).
     const Scene& scene = test::cornell_box();
-    const Frame u = render_with(scene, {}, 32, 64);
+    const int kSeeds = 8;
+    auto replicate_variance = [&](const IntegratorOptions& iopt) {
+        std::vector<Image> images;
+        for (int k = 0; k < kSeeds; ++k)
+            images.push_back(render_with(scene, iopt, 32, 64, 100 + k).beauty);
+        // Mean over R, G, B of the pixels below the top quarter (see lower_variance).
+        double s = 0;
+        int n = 0;
+        for (int y = 32 / 4; y < 32; ++y)
+            for (int x = 0; x < 32; ++x)
+                for (int c = 0; c < 3; ++c, ++n) {
+                    double m = 0, m2 = 0;
+                    for (const Image& im : images) {
+                        const double v = im.at(x, y)[c];
+                        m += v;
+                        m2 += v * v;
+                    }
+                    m /= kSeeds;
+                    s += (m2 / kSeeds - m * m) * kSeeds / (kSeeds - 1);
+                }
+        return s / n;
+    };
+    const double u = replicate_variance({});
     IntegratorOptions r;
     r.regularize_roughness = 0.3f;
-    const Frame f = render_with(scene, r, 32, 64);
-    EXPECT_LT(lower_variance(f), 0.92 * lower_variance(u))
-        << lower_variance(f) << " vs " << lower_variance(u);
+    const double f = replicate_variance(r);
+    EXPECT_LT(f, 0.85 * u) << f << " vs " << u;
 }
 
 }  // namespace
