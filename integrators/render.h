@@ -25,7 +25,7 @@ struct RenderOptions {
     uint64_t seed = 0;
     int threads = 0;  // 0: all hardware threads
     int tile_size = 16;
-    SamplerType sampler = SamplerType::Stratified;
+    SamplerType sampler = SamplerType::TabledSobol;
     std::string filter = "gaussian";
     bool progress = true;
     std::string label = "render";

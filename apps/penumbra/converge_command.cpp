@@ -161,10 +161,11 @@ Image render_reference(const ConvergeOptions& o, const RenderCommandOptions& bas
     RenderStats stats;
     const Image ref = render_image(*s, render_options_for(ro, "reference"), stats);
     const std::string path = (fs::path(o.out_dir) / "reference.exr").string();
+    const std::string sampler = sampler_in_effect(parse_sampler_type(ro.sampler), ro.spp);
     write_exr(path, ref, {{"penumbra:scene", o.scene},
                           {"penumbra:spp", std::to_string(stats.spp)},
                           {"penumbra:seed", std::to_string(ro.seed)},
-                          {"penumbra:sampler", ro.sampler},
+                          {"penumbra:sampler", sampler},
                           {"penumbra:integrator", ro.integrator}});
     if (!base.quiet)
         std::printf("reference: %u spp in %s -> %s\n", stats.spp,

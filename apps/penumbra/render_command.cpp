@@ -18,6 +18,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/progress.h"
+#include "core/sampling/sampler.h"
 #include "integrators/render.h"
 #include "io/checkpoint.h"
 #include "io/image_writer.h"
@@ -206,7 +207,7 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
         {"penumbra:default_lights_added", setup->default_lights ? "1" : "0"},
         {"penumbra:exposure", o.exposure},
         {"penumbra:accelerator", o.accel},
-        {"penumbra:sampler", o.sampler},
+        {"penumbra:sampler", sampler_in_effect(parse_sampler_type(o.sampler), o.spp)},
         {"penumbra:filter", o.filter},
         // The samples actually rendered: fewer than asked after a time limit or Ctrl-C.
         {"penumbra:spp", std::to_string(stats.spp)},

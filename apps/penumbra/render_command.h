@@ -42,7 +42,7 @@ struct RenderCommandOptions {
     std::string env;            // equirectangular image
     std::vector<float> env_color;  // constant environment radiance (r g b)
     float env_intensity = 1, env_rotation = 0;
-    std::string sampler = "stratified";
+    std::string sampler = "tabled-sobol";
     std::string filter = "gaussian";
     std::string accel = "embree";
     int max_depth = 8;

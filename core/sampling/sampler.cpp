@@ -155,6 +155,22 @@ std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t s
     throw std::invalid_argument("unknown sampler type");
 }
 
+std::string sampler_in_effect(SamplerType type, uint32_t spp) {
+    switch (type) {
+        case SamplerType::Independent:
+            return "independent";
+        case SamplerType::Stratified:
+            return "stratified";
+        case SamplerType::Sobol:
+            return "sobol";
+        case SamplerType::ZSobol:
+            return "zsobol";
+        case SamplerType::TabledSobol:
+            return tabled_sobol_supports(spp) ? "tabled-sobol" : "stratified";
+    }
+    throw std::invalid_argument("unknown sampler type");
+}
+
 SamplerType parse_sampler_type(const std::string& name) {
     if (name == "independent") return SamplerType::Independent;
     if (name == "stratified") return SamplerType::Stratified;

@@ -100,7 +100,7 @@ public:
 private:
     uint64_t dimension_hash() const;
     HashedPermutation m_permutation;  // of the spp sample indices
-    uint64_t m_pixel_hash = 0;  // hash_values(seed, x, y), the prefix of every dimension's
+    uint64_t m_pixel_hash = 0;        // hash_values(seed, x, y), the prefix of every dimension's
     uint32_t m_index = 0;
     uint32_t m_dimension = 0;
 };
@@ -115,6 +115,9 @@ enum class SamplerType { Independent, Stratified, Sobol, ZSobol, TabledSobol };
 // TabledSobol takes power-of-two spp (up to 2^16); for others it gives the stratified
 // sampler.
 std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t seed);
+// The name (as parse_sampler_type reads it) of the sampler make_sampler gives for spp: what
+// an image's header records.
+std::string sampler_in_effect(SamplerType type, uint32_t spp);
 // "independent" | "stratified" | "sobol" | "zsobol" | "tabled-sobol"; throws
 // std::invalid_argument otherwise.
 SamplerType parse_sampler_type(const std::string& name);
