@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/facet.h"
 #include "core/scene/motion.h"
 
 namespace penumbra {
@@ -83,26 +84,41 @@ SurfacePoint surface_point_on(const TriangleMesh& mesh, const Transform& xf, con
     const Vec3 p_error =
         point_error(xf, q, (abs(p0 * b0) + abs(p1 * b1) + abs(p2 * b2)) * gamma(7));
     const Vec3 e1 = p1 - p0, e2 = p2 - p0;
-    // Normals transform with the inverse transpose: right under non-uniform scale, and
-    // under mirroring it keeps the normal on the side the (flipped) winding implies.
-    const Vec3 face = cross(e1, e2);
-    Vec3 ng = xf.normal(face);
-    const float ng_len = length(ng);
-    ng = ng_len > 0 ? ng / ng_len : -normalize(ray.d);
+    // The geometric normal and the flat-facet test (facet.h), from the hit's precomputed
+    // facet where the accelerator has one, else here with the same functions.
+    const Facet* facet = hit.facet;
+    Vec3 face, ng;
+    bool has_ng;
+    if (facet) {
+        has_ng = (facet->flags & Facet::kNormal) != 0;
+        ng = facet->ng;
+    } else {
+        face = cross(e1, e2);
+        has_ng = world_face_normal(xf, face, &ng);
+    }
+    if (!has_ng) ng = -normalize(ray.d);  // a degenerate triangle: face the ray
 
     Vec3 ns = ng;
     Vec3 p_smooth = p;
     if (!mesh.normals.empty()) {
         const bool bends = !mesh.motion_normals.empty();
-        const Vec3 n0 = bends ? normal_at(mesh, i0, ray.time) : mesh.normals[i0],
-                   n1 = bends ? normal_at(mesh, i1, ray.time) : mesh.normals[i1],
-                   n2 = bends ? normal_at(mesh, i2, ray.time) : mesh.normals[i2];
-        // A flat-shaded facet (three equal normals along the face normal, as glTF
-        // exporters write hard edges) has every vertex plane through its own plane:
-        // the lift would only add rounding noise, and the interpolation gives n0 back.
-        const float norms2 = length_squared(n0) * length_squared(face);
-        const bool flat = n0 == n1 && n0 == n2 && std::isfinite(norms2) &&
-                          length_squared(cross(n0, face)) <= 1e-12f * norms2;
+        auto normal = [&](uint32_t i) {
+            return bends ? normal_at(mesh, i, ray.time) : mesh.normals[i];
+        };
+        const Vec3 n0 = normal(i0);
+        Vec3 n1, n2;
+        bool flat;
+        if (facet) {  // only a flat facet's n1 and n2 go unread
+            flat = (facet->flags & Facet::kFlat) != 0;
+            if (!flat) {
+                n1 = normal(i1);
+                n2 = normal(i2);
+            }
+        } else {
+            n1 = normal(i1);
+            n2 = normal(i2);
+            flat = is_flat_facet(n0, n1, n2, face);
+        }
         Vec3 n = n0;
         if (!flat) {
             const Vec3 v[3] = {p0, p1, p2}, vn[3] = {n0, n1, n2};

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/facet.h"
 #include "core/log.h"
 #include "core/scene/motion.h"
 
@@ -88,9 +89,18 @@ struct EmbreeAccel::Impl {
     std::vector<std::vector<uint32_t>> mesh_ids;
     // instID -> object index.
     std::vector<uint32_t> instance_object;
-    // Top-level geomIDs from instance_count on are flattened meshes: (instance, mesh).
+    // Top-level geomIDs from instance_count on are flattened meshes, with their facets
+    // (null for a mesh whose normals move).
+    struct FlatMesh {
+        uint32_t instance, mesh;
+        const Facet* facets;
+    };
     uint32_t instance_count = 0;
-    std::vector<std::pair<uint32_t, uint32_t>> flat_ids;
+    std::vector<FlatMesh> flat_ids;
+    // The flattened meshes' facets: per hit on them, make_surface_point reads the world
+    // normal and the flat-shading flag instead of recomputing them (16 bytes a triangle,
+    // within EmbreeBuildOptions::flatten_budget triangles).
+    std::vector<std::vector<Facet>> facets;
 
     void throw_if_error(const char* what) {
         std::lock_guard<std::mutex> lock(errors.mutex);
@@ -105,9 +115,10 @@ struct EmbreeAccel::Impl {
         Hit h;
         h.t = t;
         if (inst_id == RTC_INVALID_GEOMETRY_ID) {
-            const auto& ids = flat_ids[geom_id - instance_count];
-            h.instance = ids.first;
-            h.mesh = ids.second;
+            const FlatMesh& ids = flat_ids[geom_id - instance_count];
+            h.instance = ids.instance;
+            h.mesh = ids.mesh;
+            if (ids.facets) h.facet = ids.facets + prim;
         } else {
             h.instance = inst_id;
             h.mesh = mesh_ids[instance_object[inst_id]][geom_id];
@@ -258,12 +269,16 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
         if (flat[ii]) {
             const bool identity = inst.to_world.matrix().is_identity();
             for (uint32_t mesh_index : scene.objects[inst.object].meshes) {
-                RTCGeometry g =
-                    new_triangles(scene.meshes[mesh_index], identity ? nullptr : &inst.to_world);
+                const TriangleMesh& mesh = scene.meshes[mesh_index];
+                RTCGeometry g = new_triangles(mesh, identity ? nullptr : &inst.to_world);
                 rtcAttachGeometryByID(
                     im.top, g, im.instance_count + static_cast<unsigned>(im.flat_ids.size()));
                 rtcReleaseGeometry(g);
-                im.flat_ids.emplace_back(static_cast<uint32_t>(ii), mesh_index);
+                im.facets.push_back(make_facets(mesh, inst.to_world));
+                const std::vector<Facet>& facets = im.facets.back();
+                m_facet_bytes += facets.size() * sizeof(Facet);
+                im.flat_ids.push_back({static_cast<uint32_t>(ii), mesh_index,
+                                       facets.empty() ? nullptr : facets.data()});
             }
             ++m_flattened;
             continue;
@@ -293,7 +308,8 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
         std::count_if(im.object_scenes.begin(), im.object_scenes.end(),
                       [](RTCScene s) { return s != nullptr; }));
     m_stats.instances = scene.instances.size() - m_flattened;
-    m_stats.memory_bytes = static_cast<size_t>(std::max<int64_t>(0, im.memory.load()));
+    m_stats.memory_bytes =
+        static_cast<size_t>(std::max<int64_t>(0, im.memory.load())) + m_facet_bytes;
 }
 
 EmbreeAccel::~EmbreeAccel() = default;

@@ -43,6 +43,9 @@ public:
     // Scene instances traced as world-space triangles of the top level
     // (EmbreeBuildOptions::flatten); stats().instances counts the others.
     size_t flattened() const { return m_flattened; }
+    // Bytes of the flattened triangles' precomputed facets (core/facet.h: 16 per triangle
+    // and placement, bounded by flatten_budget), which their hits point to.
+    size_t facet_bytes() const { return m_facet_bytes; }
     // Eight closest-hit queries as one rtcIntersect8 packet (hits[i] empty: a miss or an
     // untraceable ray); for coherent batches such as a 4 x 2 block of camera rays.
     // bench/accel_bench.cpp measures it against intersect().
@@ -60,6 +63,7 @@ private:
     AccelStats m_stats;
     size_t m_copied_bytes = 0;
     size_t m_flattened = 0;
+    size_t m_facet_bytes = 0;
 };
 
 // The transform Embree itself computes at time u for an instance with these time steps

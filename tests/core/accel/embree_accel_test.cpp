@@ -4,13 +4,16 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "core/accel/accel_check.h"
+#include "core/facet.h"
 #include "core/sampling/rng.h"
 #include "core/sampling/warp.h"
 #include "support/accel_agreement.h"
 #include "support/scene_builder.h"
+#include "support/surface_point_checks.h"
 
 namespace penumbra {
 namespace {
@@ -213,6 +216,46 @@ TEST(EmbreeAccel, FlattenedObjectsGiveTheHitsOfInstances) {
     for (const auto& h : flat_hits.hits)
         if (h) ++reached[h->instance];
     for (size_t i = 0; i < reached.size(); ++i) EXPECT_GT(reached[i], 100) << i;
+}
+
+// Hits on flattened objects point to their triangle's precomputed facet (core/facet.h),
+// and the surface point built from it is the one built without it, bit for bit: smooth
+// (a mirrored, non-uniformly scaled sphere) and flat (a cube placed twice) triangles.
+// Instanced objects' hits carry none.
+TEST(EmbreeAccel, FlattenedHitsCarryFacetsThatGiveTheSameSurfacePoints) {
+    Scene scene;
+    const uint32_t sphere = test::add_sphere_object(scene, -1, 12, 24);  // 528 triangles
+    test::add_instance(scene, sphere,
+                       Transform::trs({-3, 0, 0}, Quat{0, 0.38f, 0, 0.92f}, {1, 2, -1}));
+    const uint32_t cube = test::add_cube_object(scene, -1);  // 12 triangles, twice
+    test::add_instance(scene, cube, Transform::translate({0, 2, 0}));
+    test::add_instance(scene, cube,
+                       Transform::trs({0, -2, 0}, Quat{0.38f, 0, 0, 0.92f}, {0.5f, 1, 1}));
+    const uint32_t big = test::add_sphere_object(scene, -1);  // 2208 triangles: instanced
+    test::add_instance(scene, big, Transform::translate({3, 1.5f, 0}));
+    EmbreeBuildOptions options;
+    options.flatten_triangles = 1000;
+    const EmbreeAccel accel(scene, options);
+    ASSERT_EQ(accel.flattened(), 3u);
+    EXPECT_EQ(accel.facet_bytes(), (528 + 2 * 12) * sizeof(Facet));
+
+    const std::vector<CheckRay> rays = test::agreement_rays(scene, accel, 5000, 2000);
+    const TraceResults traced = trace_rays(accel, rays);
+    std::vector<int> with_facet(scene.instances.size(), 0);
+    for (size_t i = 0; i < rays.size(); ++i) {
+        const std::optional<Hit>& hit = traced.hits[i];
+        if (!hit) continue;
+        const bool flattened = hit->instance < 3;
+        ASSERT_EQ(hit->facet != nullptr, flattened) << "instance " << hit->instance;
+        if (!hit->facet) continue;
+        ++with_facet[hit->instance];
+        Hit bare = *hit;
+        bare.facet = nullptr;
+        test::expect_same_surface_point(make_surface_point(scene, rays[i].ray, *hit),
+                                        make_surface_point(scene, rays[i].ray, bare),
+                                        "ray " + std::to_string(i));
+    }
+    for (size_t ii = 0; ii < 3; ++ii) EXPECT_GT(with_facet[ii], 100) << ii;
 }
 
 }  // namespace

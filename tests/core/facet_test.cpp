@@ -1,0 +1,115 @@
+// Precomputed facets (core/facet.*): a hit that carries its triangle's facet gives the
+// surface point a hit without one gives, bit for bit, on flat, smooth, unshaded and
+// degenerate triangles under translations, rotations, non-uniform scales and mirrors.
+#include "core/facet.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "core/surface_point.h"
+#include "support/surface_point_checks.h"
+
+namespace penumbra {
+namespace {
+
+struct Case {
+    std::string name;
+    std::vector<Vec3> positions, normals;
+    uint32_t expected_flags;
+};
+
+std::vector<Case> cases() {
+    const std::vector<Vec3> tri = {{0, 0, 0}, {1, 0.3f, 0}, {0.2f, 0.1f, 1}};
+    const Vec3 face = normalize(cross(tri[1] - tri[0], tri[2] - tri[0]));
+    const Vec3 up(0, 1, 0);
+    constexpr uint32_t kN = Facet::kNormal, kF = Facet::kFlat;
+    return {
+        {"flat", tri, {face, face, face}, kN | kF},
+        {"flat, normals against the winding", tri, {-face, -face, -face}, kN | kF},
+        {"equal normals off the face normal", tri, {up, up, up}, kN},
+        {"smooth", tri, {up, face, normalize(Vec3(0.2f, 1, 0.3f))}, kN},
+        {"no normals", tri, {}, kN},
+        {"huge normals (norms overflow)", tri, {face * 1e20f, face * 1e20f, face * 1e20f}, kN},
+        // No normal; flat, as the per-hit test has always judged a zero face normal.
+        {"degenerate", {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}, {up, up, up}, kF},
+    };
+}
+
+TEST(Facet, HitsWithTheirFacetGiveTheSurfacePointOfHitsWithout) {
+    const float s = std::sqrt(0.5f);
+    const std::vector<std::pair<std::string, Transform>> transforms = {
+        {"identity", Transform()},
+        {"translation", Transform::translate({1, -2, 3})},
+        {"rotation and scale", Transform::trs({0.5f, 0, 0}, Quat{0, s, 0, s}, {2, 1, 0.5f})},
+        {"mirror", Transform::scale({1, 1, -1}) *
+                       Transform::trs({0, 4, 0}, Quat{0.38f, 0, 0, 0.92f}, {1, 3, 1})},
+    };
+    const float bary[][2] = {{0.3f, 0.5f}, {0, 0}, {1, 0}, {0.1f, 0.1f}};
+    const Vec3 dirs[] = {{0, -1, 0}, {0.3f, 0.5f, -0.8f}, {-2, 0.1f, 3}};
+    int compared = 0;
+    for (const Case& c : cases())
+        for (const auto& [xf_name, xf] : transforms) {
+            Scene scene;
+            TriangleMesh mesh;
+            mesh.positions = c.positions;
+            mesh.normals = c.normals;
+            mesh.uv0 = {{0, 0}, {1, 0}, {0.3f, 0.8f}};  // dp/du and the cone's UV widths
+            mesh.indices = {0, 1, 2};
+            scene.meshes.push_back(mesh);
+            scene.objects.push_back({"triangle", {0}, {}});
+            Instance inst;
+            inst.to_world = xf;
+            scene.instances.push_back(inst);
+            const Facet facet = make_facet(scene.meshes[0], xf, 0);
+            EXPECT_EQ(facet.flags, c.expected_flags) << c.name << ", " << xf_name;
+            for (const auto& b : bary)
+                for (const Vec3& d : dirs)
+                    for (const bool cone : {false, true}) {
+                        Ray ray;
+                        ray.d = d;
+                        if (cone) ray.cone = {0.01f, 0.002f};
+                        Hit hit;
+                        hit.t = 1.5f;
+                        hit.b1 = b[0];
+                        hit.b2 = b[1];
+                        const SurfacePoint computed = make_surface_point(scene, ray, hit);
+                        hit.facet = &facet;
+                        const SurfacePoint looked_up = make_surface_point(scene, ray, hit);
+                        test::expect_same_surface_point(
+                            looked_up, computed,
+                            c.name + ", " + xf_name + ", b " + std::to_string(b[0]) + " " +
+                                std::to_string(b[1]));
+                        ++compared;
+                    }
+        }
+    EXPECT_EQ(compared, 7 * 4 * 4 * 3 * 2);
+}
+
+TEST(Facet, OneForEachTriangleAndNoneForDeformingMeshes) {
+    TriangleMesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    mesh.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {1, 0, 0}};
+    mesh.indices = {0, 1, 2, 0, 2, 3, 0, 3, 1};
+    const Transform xf = Transform::trs({1, 2, 3}, Quat{0, 0, 0.6f, 0.8f}, {1, 2, 3});
+    const std::vector<Facet> facets = make_facets(mesh, xf);
+    ASSERT_EQ(facets.size(), 3u);
+    for (uint32_t prim = 0; prim < 3; ++prim) {
+        const Facet f = make_facet(mesh, xf, prim);
+        EXPECT_EQ(facets[prim].flags, f.flags);
+        EXPECT_TRUE(test::same_bits(&facets[prim].ng.x, &f.ng.x, 3)) << prim;
+    }
+    EXPECT_EQ(facets[0].flags, Facet::kNormal | Facet::kFlat);
+    EXPECT_EQ(facets[1].flags, Facet::kNormal);  // shading normals differ
+
+    TriangleMesh moving = mesh;
+    moving.motion_positions = {mesh.positions, mesh.positions};
+    EXPECT_TRUE(make_facets(moving, xf).empty());
+    TriangleMesh bending = mesh;
+    bending.motion_normals = {mesh.normals, mesh.normals};
+    EXPECT_TRUE(make_facets(bending, xf).empty());
+}
+
+}  // namespace
+}  // namespace penumbra
