@@ -10,7 +10,7 @@ std::optional<LightSample> PointLight::sample_Li(const ShadingPoint& ref, Vec2,
     const float dist2 = length_squared(d);
     if (!(dist2 > 0) || is_black(m_I)) return std::nullopt;
     const float dist = std::sqrt(dist2);
-    return LightSample{m_I / dist2, d / dist, dist, 1.0f, true};
+    return LightSample{d / dist, dist, m_I / dist2, 1.0f, true};
 }
 
 }  // namespace penumbra
