@@ -155,28 +155,33 @@ std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t s
     throw std::invalid_argument("unknown sampler type");
 }
 
+namespace {
+
+// Each sampler's name as the command line and job files spell it: one list for parsing and
+// for headers.
+struct SamplerName {
+    SamplerType type;
+    const char* name;
+};
+constexpr SamplerName kSamplerNames[] = {{SamplerType::Independent, "independent"},
+                                         {SamplerType::Stratified, "stratified"},
+                                         {SamplerType::Sobol, "sobol"},
+                                         {SamplerType::ZSobol, "zsobol"},
+                                         {SamplerType::TabledSobol, "tabled-sobol"}};
+
+}  // namespace
+
 std::string sampler_in_effect(SamplerType type, uint32_t spp) {
-    switch (type) {
-        case SamplerType::Independent:
-            return "independent";
-        case SamplerType::Stratified:
-            return "stratified";
-        case SamplerType::Sobol:
-            return "sobol";
-        case SamplerType::ZSobol:
-            return "zsobol";
-        case SamplerType::TabledSobol:
-            return tabled_sobol_supports(spp) ? "tabled-sobol" : "stratified";
-    }
+    if (type == SamplerType::TabledSobol && !tabled_sobol_supports(spp))
+        type = SamplerType::Stratified;
+    for (const SamplerName& s : kSamplerNames)
+        if (s.type == type) return s.name;
     throw std::invalid_argument("unknown sampler type");
 }
 
 SamplerType parse_sampler_type(const std::string& name) {
-    if (name == "independent") return SamplerType::Independent;
-    if (name == "stratified") return SamplerType::Stratified;
-    if (name == "sobol") return SamplerType::Sobol;
-    if (name == "zsobol") return SamplerType::ZSobol;
-    if (name == "tabled-sobol") return SamplerType::TabledSobol;
+    for (const SamplerName& s : kSamplerNames)
+        if (name == s.name) return s.type;
     throw std::invalid_argument(
         "unknown sampler '" + name +
         "' (expected independent, stratified, sobol, zsobol or tabled-sobol)");
