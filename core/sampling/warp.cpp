@@ -2,38 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 
 namespace penumbra {
-
-namespace {
-
-// c ? a : b by masks: GCC turns the ternary on floats into a branch, which on the
-// concentric map's wedge (a coin flip per sample) mispredicts half the time.
-inline float select(bool c, float a, float b) {
-    uint32_t ua, ub;
-    std::memcpy(&ua, &a, 4);
-    std::memcpy(&ub, &b, 4);
-    const uint32_t m = 0u - uint32_t(c);
-    const uint32_t r = (ua & m) | (ub & ~m);
-    float out;
-    std::memcpy(&out, &r, 4);
-    return out;
-}
-
-}  // namespace
 
 Vec2 square_to_concentric_disk(Vec2 u) {
     const float ox = 2 * u.x - 1, oy = 2 * u.y - 1;
     if (ox == 0 && oy == 0) return {0, 0};
-    // Shirley-Chiu's two wedges: for |ox| > |oy| the angle is (pi/4) oy/ox, else
-    // pi/2 - (pi/4) ox/oy; the wedge is chosen by selects, not by a branch that
-    // mispredicts half the time, with the same arithmetic as the branches.
-    const bool x_major = std::abs(ox) > std::abs(oy);
-    const float r = select(x_major, ox, oy);
-    const float t = (kPi / 4) * (select(x_major, oy, ox) / r);
-    const float theta = select(x_major, t, kPi / 2 - t);
+    float r, theta;
+    if (std::abs(ox) > std::abs(oy)) {
+        r = ox;
+        theta = (kPi / 4) * (oy / ox);
+    } else {
+        r = oy;
+        theta = kPi / 2 - (kPi / 4) * (ox / oy);
+    }
     return {r * std::cos(theta), r * std::sin(theta)};
 }
 
