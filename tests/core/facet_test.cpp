@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/surface_point.h"
+#include "support/scene_builder.h"
 #include "support/surface_point_checks.h"
 
 namespace penumbra {
@@ -57,11 +58,7 @@ TEST(Facet, HitsWithTheirFacetGiveTheSurfacePointOfHitsWithout) {
             mesh.normals = c.normals;
             mesh.uv0 = {{0, 0}, {1, 0}, {0.3f, 0.8f}};  // dp/du and the cone's UV widths
             mesh.indices = {0, 1, 2};
-            scene.meshes.push_back(mesh);
-            scene.objects.push_back({"triangle", {0}, {}});
-            Instance inst;
-            inst.to_world = xf;
-            scene.instances.push_back(inst);
+            test::add_instance(scene, test::add_mesh_object(scene, mesh, "triangle"), xf);
             const Facet facet = make_facet(scene.meshes[0], xf, 0);
             EXPECT_EQ(facet.flags, c.expected_flags) << c.name << ", " << xf_name;
             for (const auto& b : bary)

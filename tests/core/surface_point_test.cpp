@@ -12,6 +12,7 @@
 #include "core/camera/orthographic_camera.h"
 #include "core/lights/directional_light.h"
 #include "io/gltf_loader.h"
+#include "support/scene_builder.h"
 #include "support/paths.h"
 #include "support/render_scene.h"
 
@@ -39,11 +40,7 @@ SurfacePoint point_on_triangle(Vec3 normal, const Transform& xf) {
     mesh.positions = {{0, 0, 0}, {1, 0.3f, 0}, {0.2f, 0.1f, 1}};
     mesh.normals = {normal, normal, normal};
     mesh.indices = {0, 1, 2};
-    scene.meshes.push_back(mesh);
-    scene.objects.push_back({"triangle", {0}, {}});
-    Instance inst;
-    inst.to_world = xf;
-    scene.instances.push_back(inst);
+    test::add_instance(scene, test::add_mesh_object(scene, mesh, "triangle"), xf);
     Ray ray;
     ray.d = {0, -1, 0};
     Hit hit;

@@ -175,18 +175,27 @@ TEST(EmbreeAccel, PacketsAndStreamsAgreeWithSingleRays) {
 // however transformed; larger objects and moving instances stay instanced. The Hit is the one
 // through instances: same instance, mesh and triangle, t and u, v within the
 // cross-check's tolerances (accel_check.h), on every kind of check ray.
-TEST(EmbreeAccel, FlattenedObjectsGiveTheHitsOfInstances) {
-    Scene scene;
-    const uint32_t once = test::add_sphere_object(scene, -1, 12, 24);  // 528 triangles
+// The flattening tests' objects: a sphere of 528 triangles placed once (mirrored, scaled
+// non-uniformly), a cube of 12 placed twice, and a sphere of 2208 placed once, the object
+// the flattening budget of 1000 triangles leaves instanced; returns the last.
+uint32_t add_flattening_objects(Scene& scene) {
+    const uint32_t once = test::add_sphere_object(scene, -1, 12, 24);
     test::add_instance(scene, once,
                        Transform::trs({-3, 0, 0}, Quat{0, 0.38f, 0, 0.92f}, {1, 2, -1}));
-    const uint32_t small = test::add_cube_object(scene, -1);  // 12 triangles, twice
+    const uint32_t small = test::add_cube_object(scene, -1);
     test::add_instance(scene, small, Transform::translate({0, 2, 0}));
     test::add_instance(scene, small,
                        Transform::trs({0, -2, 0}, Quat{0.38f, 0, 0, 0.92f}, {0.5f, 1, 1}));
-    const uint32_t big = test::add_sphere_object(scene, -1);  // 2 x 2208 triangles
+    const uint32_t big = test::add_sphere_object(scene, -1);
     test::add_instance(scene, big, Transform::translate({3, 1.5f, 0}));
-    test::add_instance(scene, big, Transform::scale({1, 1, -1}) * Transform::translate({3, -1.5f, 0}));
+    return big;
+}
+
+TEST(EmbreeAccel, FlattenedObjectsGiveTheHitsOfInstances) {
+    Scene scene;
+    const uint32_t big = add_flattening_objects(scene);  // the big sphere twice
+    test::add_instance(scene, big,
+                       Transform::scale({1, 1, -1}) * Transform::translate({3, -1.5f, 0}));
     const uint32_t moving = test::add_cube_object(scene, -1);
     test::add_instance(scene, moving, Transform::translate({0, 0, 3}));
     scene.instances.back().motion = {Transform::translate({0, 0, 3}),
@@ -224,15 +233,7 @@ TEST(EmbreeAccel, FlattenedObjectsGiveTheHitsOfInstances) {
 // Instanced objects' hits carry none.
 TEST(EmbreeAccel, FlattenedHitsCarryFacetsThatGiveTheSameSurfacePoints) {
     Scene scene;
-    const uint32_t sphere = test::add_sphere_object(scene, -1, 12, 24);  // 528 triangles
-    test::add_instance(scene, sphere,
-                       Transform::trs({-3, 0, 0}, Quat{0, 0.38f, 0, 0.92f}, {1, 2, -1}));
-    const uint32_t cube = test::add_cube_object(scene, -1);  // 12 triangles, twice
-    test::add_instance(scene, cube, Transform::translate({0, 2, 0}));
-    test::add_instance(scene, cube,
-                       Transform::trs({0, -2, 0}, Quat{0.38f, 0, 0, 0.92f}, {0.5f, 1, 1}));
-    const uint32_t big = test::add_sphere_object(scene, -1);  // 2208 triangles: instanced
-    test::add_instance(scene, big, Transform::translate({3, 1.5f, 0}));
+    add_flattening_objects(scene);
     EmbreeBuildOptions options;
     options.flatten_triangles = 1000;
     const EmbreeAccel accel(scene, options);
