@@ -8,6 +8,8 @@ namespace penumbra {
 
 // Unit disk, Shirley-Chiu concentric map (preserves stratification); pdf = 1/pi per area.
 Vec2 square_to_concentric_disk(Vec2 u);
+// (cos a, sin a) for a in [-pi/4, pi/4], as the concentric map computes them (for tests).
+Vec2 cos_sin_quarter_pi_for_test(float a);
 // Regular n-gon inscribed in the unit circle (n >= 3), uniform by area: pick a triangle
 // wedge, then a uniform point in it. pdf = 1/area of the polygon.
 Vec2 square_to_polygon(Vec2 u, int blades, float rotation = 0);
