@@ -13,30 +13,19 @@ constexpr int kBins = 256;
 Filter::Filter(std::string name, float radius) : m_name(std::move(name)), m_radius(radius) {}
 
 void Filter::tabulate() {
-    // Midpoint values over kBins bins; the samples then follow |f| closely and f/pdf is
-    // nearly constant (exactly constant for the box).
-    m_pdf.assign(kBins, 0);
-    m_cdf.assign(kBins + 1, 0);
+    // Midpoint values: the samples follow |f| closely and f/pdf is nearly constant
+    // (exactly constant for the box).
+    std::vector<float> f(kBins);
     const float dx = 2 * m_radius / kBins;
-    for (int i = 0; i < kBins; ++i) {
-        m_pdf[i] = std::abs(eval_1d(-m_radius + (i + 0.5f) * dx));
-        m_cdf[i + 1] = m_cdf[i] + m_pdf[i] * dx;
-    }
-    m_integral = m_cdf[kBins];
-    for (int i = 0; i <= kBins; ++i) m_cdf[i] /= m_integral;
-    for (int i = 0; i < kBins; ++i) m_pdf[i] /= m_integral;
+    for (int i = 0; i < kBins; ++i) f[i] = std::abs(eval_1d(-m_radius + (i + 0.5f) * dx));
+    m_distribution = Distribution1D(f);
 }
 
 float Filter::sample_1d(float u, float* pdf) const {
-    const int i = std::clamp(
-        static_cast<int>(std::upper_bound(m_cdf.begin(), m_cdf.end(), u) - m_cdf.begin()) - 1,
-        0, kBins - 1);
-    // Skip empty bins (the box filter's outside): the CDF is flat there.
-    const float width = m_cdf[i + 1] - m_cdf[i];
-    const float t = width > 0 ? (u - m_cdf[i]) / width : 0.5f;
-    const float dx = 2 * m_radius / kBins;
-    *pdf = m_pdf[i];
-    return -m_radius + (i + std::clamp(t, 0.0f, 1.0f)) * dx;
+    // Distribution1D's density is over [0, 1); the filter's support is 2 * radius wide.
+    const float x = m_distribution.sample_continuous(u, pdf);
+    *pdf /= 2 * m_radius;
+    return (2 * x - 1) * m_radius;
 }
 
 FilterSample Filter::sample(Vec2 u) const {
