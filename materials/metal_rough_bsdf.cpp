@@ -88,7 +88,7 @@ MetalRoughBsdf::MetalRoughBsdf(const MetalRoughParams& p)
         // 32 nodes resolve the film's oscillation in c (a period of 0.1 at 1200 nm). Only
         // the energy-conserving layering of a base needs it.
         const bool needs_bound = m_p.layering == GltfLayering::AlbedoScaled && m_p.metallic < 1;
-        m_film_bound[kFilmNodes] = 0;
+        m_film_bound.fill(0);
         float bound = 0;
         for (int i = kFilmNodes; i >= 1 && needs_bound; --i) {
             const float c = float(i) / kFilmNodes, m = 1 - c;
