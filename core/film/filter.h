@@ -6,7 +6,6 @@
 
 #include <memory>
 #include <string>
-#include <vector>
 
 #include "core/math/vec.h"
 #include "core/sampling/distribution.h"
