@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.h"
+
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -104,50 +106,65 @@ inline F4 cos_sub_clamped(F4 sin_a, F4 cos_a, F4 sin_b, F4 cos_b) {
 inline F4 sin_sub_clamped(F4 sin_a, F4 cos_a, F4 sin_b, F4 cos_b) {
     return select(gt(cos_a, cos_b), F4(0.0f), sin_a * cos_b - cos_a * sin_b);
 }
-inline F4 sin_from_cos(F4 c) { return sqrt4(max4(F4(0.0f), F4(1.0f) - c * c)); }
 
-// LightBounds::importance for the four children of a node at once, from the node's
-// precomputed bounds. One difference: "p inside the box" is read as "p inside the box's
-// bounding sphere" (which holds the box), so no box is stored.
-F4 importance4(const LightBvh::Node& node, Vec3 p, Vec3 n) {
-    const F4 dx = F4(p.x) - F4::load(node.cx), dy = F4(p.y) - F4::load(node.cy),
-             dz = F4(p.z) - F4::load(node.cz);
-    const F4 r2 = F4::load(node.r2);
+// LightBounds::importance for four children of a node at once (children h to h + 3),
+// from the node's precomputed bounds. One difference: "p inside the box" is read as "p
+// inside the box's bounding sphere" (which holds the box), so no box is stored.
+// The divider (square roots too) bounds the descent: every sine and cosine is a square
+// root of the squared distance less a squared projection, times inv_len (sin_w =
+// |d x w| / |d| as sqrt(|d|^2 - (d.w)^2) / |d|), so the roots run side by side instead
+// of one after another, and the inverse squared distance is inv_len^2 outside the box's
+// sphere and a per-child constant inside: 5 square roots and 1 division for four
+// children, where the formulas read 5 and 3, three deep.
+F4 importance4(const LightBvh::Node& node, int h, Vec3 p, Vec3 n, bool has_n) {
+    const F4 dx = F4(p.x) - F4::load(node.cx + h), dy = F4(p.y) - F4::load(node.cy + h),
+             dz = F4(p.z) - F4::load(node.cz + h);
+    const F4 r2 = F4::load(node.r2 + h);
     const F4 ld2 = dx * dx + dy * dy + dz * dz;
-    const F4 d2 = max4(max4(ld2, r2), F4(1e-20f));
     const F4 has_dir = gt(ld2, F4(0.0f));
     const F4 inv_len = F4(1.0f) / sqrt4(ld2);  // inf at 0: those lanes are not selected
     // At the centroid the direction is the cone's axis, as in LightBounds::importance.
-    F4 cos_w = select(has_dir,
-                      (dx * F4::load(node.wx) + dy * F4::load(node.wy) + dz * F4::load(node.wz)) *
-                          inv_len,
-                      F4(1.0f));
-    cos_w = clear_bits(cos_w, node.two_sided);
-    const F4 sin_w = sin_from_cos(cos_w);
+    const F4 dw = dx * F4::load(node.wx + h) + dy * F4::load(node.wy + h) +
+                  dz * F4::load(node.wz + h);
+    const F4 cos_w = select(has_dir, clear_bits(dw, node.two_sided + h) * inv_len, F4(1.0f));
+    const F4 sin_w =
+        select(has_dir, min4(sqrt4(max4(F4(0.0f), ld2 - dw * dw)) * inv_len, F4(1.0f)), F4(0.0f));
 
-    // theta_b: the cone from p that holds the box's bounding sphere; all directions inside.
+    // theta_b: the cone from p that holds the box's bounding sphere (sin = radius over
+    // distance); all directions inside it. 1 / max(d^2, r^2, 1e-20) is inv_len^2 outside
+    // and the child's own constant inside.
     const F4 outside = gt(ld2, r2);
-    const F4 s = min4(r2 / max4(ld2, F4(1e-30f)), F4(1.0f));  // sin^2 theta_b outside
-    const F4 cos_b = select(outside, sqrt4(F4(1.0f) - s), F4(-1.0f));
-    const F4 sin_b = select(outside, sqrt4(s), F4(0.0f));
+    const F4 cos_b = select(outside, min4(sqrt4(ld2 - r2) * inv_len, F4(1.0f)), F4(-1.0f));
+    const F4 sin_b = select(outside, min4(F4::load(node.r + h) * inv_len, F4(1.0f)), F4(0.0f));
+    const F4 inv_d2 = select(outside, min4(inv_len * inv_len, F4(1e20f)), F4::load(node.inv_r2 + h));
 
-    const F4 cos_o = F4::load(node.cos_o), sin_o = F4::load(node.sin_o);
+    const F4 cos_o = F4::load(node.cos_o + h), sin_o = F4::load(node.sin_o + h);
     const F4 cos_x = cos_sub_clamped(sin_w, cos_w, sin_o, cos_o);
     const F4 sin_x = sin_sub_clamped(sin_w, cos_w, sin_o, cos_o);
     const F4 cos_p = cos_sub_clamped(sin_x, cos_x, sin_b, cos_b);
-    F4 importance = F4::load(node.phi) * max4(F4(0.0f), cos_p) / d2;
-    if (n.x != 0 || n.y != 0 || n.z != 0) {
-        F4 cos_i = (dx * F4(n.x) + dy * F4(n.y) + dz * F4(n.z)) * inv_len;
-        cos_i = select(has_dir, max4(cos_i, F4(0.0f) - cos_i), F4(1.0f));
-        const F4 sin_i = sin_from_cos(cos_i);
+    F4 importance = F4::load(node.phi + h) * max4(F4(0.0f), cos_p) * inv_d2;
+    if (has_n) {
+        const F4 dn = dx * F4(n.x) + dy * F4(n.y) + dz * F4(n.z);
+        const F4 cos_i = select(has_dir, max4(dn, F4(0.0f) - dn) * inv_len, F4(1.0f));
+        const F4 sin_i = select(
+            has_dir, min4(sqrt4(max4(F4(0.0f), ld2 - dn * dn)) * inv_len, F4(1.0f)), F4(0.0f));
         importance = importance * max4(F4(0.0f), cos_sub_clamped(sin_i, cos_i, sin_b, cos_b));
     }
     // Strictly outside the emission spread nothing arrives (cos_p < cos_theta_e).
-    return select(gt(F4::load(node.cos_e), cos_p), F4(0.0f), importance);
+    return select(gt(F4::load(node.cos_e + h), cos_p), F4(0.0f), importance);
 }
 
-// The sum every descent divides by, in one fixed order so sample() and pmf() agree.
-inline float sum4(const float i[4]) { return (i[0] + i[1]) + (i[2] + i[3]); }
+// Every child's importance at (p, n) into imp (kWidth floats, aligned), and their sum,
+// in one fixed order so that sample() and pmf() agree.
+inline float weigh(const LightBvh::Node& node, Vec3 p, Vec3 n, bool has_n, float* imp) {
+    for (int h = 0; h < LightBvh::kWidth; h += 4) importance4(node, h, p, n, has_n).store(imp + h);
+    float sum = 0;
+    for (int h = 0; h < LightBvh::kWidth; h += 4)
+        sum += (imp[h] + imp[h + 1]) + (imp[h + 2] + imp[h + 3]);
+    return sum;
+}
+
+inline bool has_normal(Vec3 n) { return n.x != 0 || n.y != 0 || n.z != 0; }
 
 }  // namespace
 
@@ -239,28 +256,31 @@ uint32_t LightBvh::build(std::vector<std::pair<uint32_t, LightBounds>>& lights, 
 }
 
 
-uint32_t LightBvh::collapse(uint32_t binary, int depth, uint64_t trail) {
-    // Up to four slots: the binary node's children, each interior one replaced by its own
-    // two children. A lone light at the root is its own (single) slot.
-    uint32_t slots[4];
-    int count = 0;
+void LightBvh::gather(uint32_t binary, int levels, uint32_t* slots, int* count) const {
     const BinaryNode& b = m_binary[binary];
-    if (b.leaf) {
-        slots[count++] = binary;
-    } else {
-        for (const uint32_t c : {binary + 1, b.index}) {
-            if (m_binary[c].leaf) {
-                slots[count++] = c;
-            } else {
-                slots[count++] = c + 1;
-                slots[count++] = m_binary[c].index;
-            }
-        }
+    if (b.leaf || levels == 0) {
+        slots[(*count)++] = binary;
+        return;
     }
+    gather(binary + 1, levels - 1, slots, count);
+    gather(b.index, levels - 1, slots, count);
+}
+
+uint32_t LightBvh::collapse(uint32_t binary, int depth, uint64_t trail) {
+    // Up to kWidth slots: the binary node's descendants kLevels levels down, or the
+    // leaves above them. A lone light at the root is its own (single) slot.
+    // The trail holds kLevels bits a level: 64 binary levels, which the build's depth
+    // (32 + log2 of the light count) reaches only past 2^31 lights.
+    if (kLevels * (depth + 1) > 64)
+        throw InternalError("light BVH deeper than its trails can record");
+    uint32_t slots[kWidth];
+    int count = 0;
+    if (m_binary[binary].leaf) slots[count++] = binary;
+    else gather(binary, kLevels, slots, &count);
     const uint32_t index = static_cast<uint32_t>(m_nodes.size());
     m_nodes.emplace_back();
     Node node{};
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < kWidth; ++k) {
         node.wz[k] = 1, node.cos_o[k] = 1;  // an empty slot: phi 0, importance 0
         if (k >= count) continue;
         const BinaryNode& s = m_binary[slots[k]];
@@ -268,13 +288,15 @@ uint32_t LightBvh::collapse(uint32_t binary, int depth, uint64_t trail) {
         const Vec3 c = l.centroid();
         node.cx[k] = c.x, node.cy[k] = c.y, node.cz[k] = c.z;
         node.r2[k] = 0.25f * length_squared(l.hi - l.lo);
+        node.r[k] = std::sqrt(node.r2[k]);
+        node.inv_r2[k] = 1 / std::max(node.r2[k], 1e-20f);
         node.phi[k] = l.phi;
         node.wx[k] = l.w.x, node.wy[k] = l.w.y, node.wz[k] = l.w.z;
         node.cos_o[k] = l.cos_theta_o;
         node.sin_o[k] = std::sqrt(std::max(0.0f, 1 - l.cos_theta_o * l.cos_theta_o));
         node.cos_e[k] = l.cos_theta_e;
         node.two_sided[k] = l.two_sided ? 0x80000000u : 0u;
-        const uint64_t t = trail | (uint64_t(k) << (2 * depth));
+        const uint64_t t = trail | (uint64_t(k) << (kLevels * depth));
         if (s.leaf) {
             node.child[k] = s.index;
             node.leaf_mask |= 1u << k;
@@ -287,31 +309,33 @@ uint32_t LightBvh::collapse(uint32_t binary, int depth, uint64_t trail) {
     return index;
 }
 
-void LightBvh::child_importance(uint32_t node, Vec3 p, Vec3 n, float out[4]) const {
-    importance4(m_nodes[node], p, n).store(out);
+void LightBvh::child_importance(uint32_t node, Vec3 p, Vec3 n, float out[kWidth]) const {
+    alignas(16) float imp[kWidth];
+    weigh(m_nodes[node], p, n, has_normal(n), imp);
+    std::copy(imp, imp + kWidth, out);
 }
 
 std::optional<std::pair<uint32_t, float>> LightBvh::sample(Vec3 p, Vec3 n, float u) const {
     if (m_nodes.empty()) return std::nullopt;
+    const bool has_n = has_normal(n);
     uint32_t i = 0;
     float pmf = 1;
     for (;;) {
         const Node& node = m_nodes[i];
-        alignas(16) float imp[4];
-        importance4(node, p, n).store(imp);
-        const float sum = sum4(imp);
+        alignas(16) float imp[kWidth];
+        const float sum = weigh(node, p, n, has_n, imp);
         if (!(sum > 0)) return std::nullopt;
         // The slot whose share of sum holds u * sum; never one of importance 0, even when
         // rounding leaves the running remainder past the last positive one.
         float rest = u * sum;
         int k = 0, last = -1;
-        for (; k < 4; ++k) {
+        for (; k < kWidth; ++k) {
             if (!(imp[k] > 0)) continue;
             last = k;
             if (rest < imp[k]) break;
             rest -= imp[k];
         }
-        if (k == 4) k = last, rest = imp[k] * kOneMinusEpsilon;
+        if (k == kWidth) k = last, rest = imp[k] * kOneMinusEpsilon;
         pmf *= imp[k] / sum;  // as pmf() computes it
         // Reuse u for the rest of the descent, rescaled into the chosen interval.
         u = std::min(rest / imp[k], kOneMinusEpsilon);
@@ -322,20 +346,20 @@ std::optional<std::pair<uint32_t, float>> LightBvh::sample(Vec3 p, Vec3 n, float
 
 float LightBvh::pmf(Vec3 p, Vec3 n, uint32_t light) const {
     if (light >= m_trail.size() || m_trail[light] == kNotInTree) return 0;
+    const bool has_n = has_normal(n);
     uint64_t trail = m_trail[light];
     uint32_t i = 0;
     float pmf = 1;
     for (;;) {
         const Node& node = m_nodes[i];
-        alignas(16) float imp[4];
-        importance4(node, p, n).store(imp);
-        const float sum = sum4(imp);
-        const int k = int(trail & 3);
+        alignas(16) float imp[kWidth];
+        const float sum = weigh(node, p, n, has_n, imp);
+        const int k = int(trail & (kWidth - 1));
         if (!(sum > 0) || !(imp[k] > 0)) return 0;
         pmf *= imp[k] / sum;
         if (node.leaf_mask >> k & 1) return pmf;
         i = node.child[k];
-        trail >>= 2;
+        trail >>= kLevels;
     }
 }
 

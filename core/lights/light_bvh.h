@@ -2,6 +2,8 @@
 // contribution at a receiver (Conty Estevez & Kulla 2018, "Importance sampling of many
 // lights with adaptive tree splitting"; pbrt-v4's BVHLightSampler), four children a node
 // so that one pass of 4-wide SIMD weighs all of them and the descent is half as deep.
+// (Eight children, two passes a node, measured slower: the square roots, not the depth,
+// bound a descent; docs/performance.md.)
 #pragma once
 
 #include <cstdint>
@@ -19,7 +21,8 @@ public:
     // lights: (the caller's index of a light, its bounds). Lights of zero power are left
     // out. Built top-down as a binary tree with pbrt-v4's surface-area-orientation cost in
     // 12 buckets per axis, one light per leaf (below depth 32, median splits), then
-    // collapsed: a node's children are its binary children's children.
+    // collapsed: a node's children are its binary descendants kLevels levels down (or the
+    // leaves above them).
     explicit LightBvh(std::vector<std::pair<uint32_t, LightBounds>> lights);
     bool empty() const { return m_nodes.empty(); }
     size_t node_count() const { return m_nodes.size(); }
@@ -32,23 +35,27 @@ public:
     // so the two agree exactly.
     float pmf(Vec3 p, Vec3 n, uint32_t light) const;
 
-    // The importances node's four children get at (p, n) (0 for an empty slot); exposed
-    // for the tests, which hold them against LightBounds::importance.
-    void child_importance(uint32_t node, Vec3 p, Vec3 n, float out[4]) const;
+    static constexpr int kLevels = 2;            // binary levels a node holds
+    static constexpr int kWidth = 1 << kLevels;  // children a node (a multiple of 4)
 
-    // What a node is, structure of arrays over its four children: the bounds the
-    // importance reads, precomputed (centroid, squared half-diagonal, sin theta_o) so the
-    // descent does no trigonometry and no per-box work.
-    struct alignas(16) Node {
-        float cx[4], cy[4], cz[4];  // box centroid
-        float r2[4];                // squared half-diagonal of the box
-        float phi[4];               // 0: empty slot
-        float wx[4], wy[4], wz[4];  // cone axis
-        float cos_o[4], sin_o[4];   // cone of normals
-        float cos_e[4];             // emission spread
-        uint32_t two_sided[4];      // sign-bit mask: emits about -w as well
-        uint32_t child[4];          // interior: node index; leaf: the caller's light index
-        uint32_t leaf_mask = 0;     // bit k: child k is a light
+    // The importances node's children get at (p, n) (0 for an empty slot); exposed for
+    // the tests, which hold them against LightBounds::importance.
+    void child_importance(uint32_t node, Vec3 p, Vec3 n, float out[kWidth]) const;
+
+    // What a node is, structure of arrays over its children: the bounds the importance
+    // reads, precomputed (centroid, squared half-diagonal, sin theta_o) so the descent
+    // does no trigonometry and no per-box work.
+    struct alignas(32) Node {
+        float cx[kWidth], cy[kWidth], cz[kWidth];  // box centroid
+        float r2[kWidth], r[kWidth];               // half-diagonal of the box, squared
+        float inv_r2[kWidth];                      // 1 / max(r2, 1e-20)
+        float phi[kWidth];                         // 0: empty slot
+        float wx[kWidth], wy[kWidth], wz[kWidth];  // cone axis
+        float cos_o[kWidth], sin_o[kWidth];        // cone of normals
+        float cos_e[kWidth];                       // emission spread
+        uint32_t two_sided[kWidth];  // sign-bit mask: emits about -w as well
+        uint32_t child[kWidth];      // interior: node index; leaf: the caller's light index
+        uint32_t leaf_mask = 0;      // bit k: child k is a light
     };
 
     const Node& node(uint32_t i) const { return m_nodes[i]; }
@@ -62,10 +69,14 @@ private:
     uint32_t build(std::vector<std::pair<uint32_t, LightBounds>>& lights, size_t begin, size_t end,
                    int depth);
     uint32_t collapse(uint32_t binary, int depth, uint64_t trail);
+    // Appends to slots the binary descendants of `binary` `levels` levels down, or the
+    // leaves above them.
+    void gather(uint32_t binary, int levels, uint32_t* slots, int* count) const;
 
     std::vector<BinaryNode> m_binary;  // only while building
     std::vector<Node> m_nodes;
-    // Per caller index: the child slot taken at each depth (bits 2d, 2d+1), or kNotInTree.
+    // Per caller index: the child slot taken at each depth (kLevels bits a depth, from
+    // bit 0), or kNotInTree.
     std::vector<uint64_t> m_trail;
     static constexpr uint64_t kNotInTree = ~uint64_t(0);
 };

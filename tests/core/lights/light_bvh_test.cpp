@@ -242,7 +242,7 @@ TEST(LightSet, ManyEmitterIrradianceIsUnbiasedForEverySampler) {
         }
 }
 
-// The tree weighs a node's four children in one SIMD pass over precomputed bounds: every
+// The tree weighs a node's children in SIMD passes over precomputed bounds: every
 // light's lane must give what LightBounds::importance gives for its bounds, for one- and
 // two-sided emitters, Lambertian and spot-like spreads, receivers with and without a
 // normal, near and far (inside some boxes, too).
@@ -266,10 +266,10 @@ TEST(LightBvh, SimdImportanceMatchesLightBounds) {
     int checked = 0, positive = 0;
     for (const ShadingPoint& ref : receivers(200, 22)) {
         for (uint32_t i = 0; i < bvh.node_count(); ++i) {
-            float imp[4];
+            float imp[LightBvh::kWidth];
             bvh.child_importance(i, ref.p, ref.n, imp);
             const LightBvh::Node& node = bvh.node(i);
-            for (int k = 0; k < 4; ++k) {
+            for (int k = 0; k < LightBvh::kWidth; ++k) {
                 if (!(node.leaf_mask >> k & 1)) continue;
                 const float want = lights[node.child[k] - 7].second.importance(ref.p, ref.n);
                 EXPECT_NEAR(imp[k], want, 2e-4f * want + 1e-7f)
