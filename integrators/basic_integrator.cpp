@@ -41,8 +41,9 @@ Spectrum BasicIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
 
         // Perfect specular reflection only; other lobes end the path.
         if (depth + 1 >= m_options.max_depth || !bsdf->has_specular()) break;
-        const std::optional<BsdfSample> bs =
-            bsdf->sample(wo, sampler.get_1d(), sampler.get_2d(), Transport::Radiance);
+        const Vec2 u_dir = sampler.get_2d();  // first, as in PathIntegrator::trace
+        const float u_lobe = sampler.get_1d();
+        const std::optional<BsdfSample> bs = bsdf->sample(wo, u_lobe, u_dir, Transport::Radiance);
         if (!bs || !bs->is_specular()) break;
         const Vec3 wi_world = sd.frame.to_world(bs->wi);
         if (dot(wi_world, side_normal(sp, sd.ng)) <= 0) break;

@@ -51,8 +51,10 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         // BSDF samples: emission they find, MIS-weighted against the light samples. They
         // estimate the non-specular lobes only; specular lobes are followed below.
         for (int i = 0; i < m_options.bsdf_samples; ++i) {
+            const Vec2 u_dir = sampler.get_2d();  // first, as in PathIntegrator::trace
+            const float u_lobe = sampler.get_1d();
             const std::optional<BsdfSample> bs =
-                bsdf.sample(wo, sampler.get_1d(), sampler.get_2d(), Transport::Radiance);
+                bsdf.sample(wo, u_lobe, u_dir, Transport::Radiance);
             if (!bs || bs->is_specular()) continue;
             const Vec3 wi_world = sd.frame.to_world(bs->wi);
             if ((bs->wi.z > 0) != (dot(wi_world, side_normal(sp, sd.ng)) > 0)) continue;
@@ -85,8 +87,10 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         // The specular part: one more sample, continued only when it picks a specular
         // lobe; its weight F / P(lobe) keeps that unbiased.
         if (!bsdf.has_specular() || ++depth >= m_options.max_depth) break;
+        const Vec2 u_dir = sampler.get_2d();  // first, as in PathIntegrator::trace
+        const float u_lobe = sampler.get_1d();
         const std::optional<BsdfSample> specular =
-            bsdf.sample(wo, sampler.get_1d(), sampler.get_2d(), Transport::Radiance);
+            bsdf.sample(wo, u_lobe, u_dir, Transport::Radiance);
         if (!specular || !specular->is_specular()) break;
         const Vec3 wi_world = sd.frame.to_world(specular->wi);
         if ((specular->wi.z > 0) != (dot(wi_world, side_normal(sp, sd.ng)) > 0)) break;

@@ -120,8 +120,11 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
                                              sides),
                      clamp_for(depth + 1));
 
-        const std::optional<BsdfSample> bs =
-            bsdf.sample(wo, sampler.get_1d(), sampler.get_2d(), Transport::Radiance);
+        // The square first, then the lobe choice: the order GCC gave the two calls as
+        // arguments (unspecified in C++), written out so every compiler draws the same.
+        const Vec2 u_dir = sampler.get_2d();
+        const float u_lobe = sampler.get_1d();
+        const std::optional<BsdfSample> bs = bsdf.sample(wo, u_lobe, u_dir, Transport::Radiance);
         if (!bs) break;
         const Vec3 wi_world = sd.frame.to_world(bs->wi);
         // Directions the interpolated normal puts on the other side than the lobe would
