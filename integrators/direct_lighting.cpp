@@ -71,7 +71,7 @@ Spectrum sample_chosen_light(const RenderContext& ctx, const SurfacePoint& sp,
 }  // namespace
 
 Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
-                          const ShadingData& sd, Vec3 wo, float time, Sampler& sampler,
+                          const ShadingData& sd, Vec3 wo, float time, PathSampler& sampler,
                           LightStrategy strategy, float light_samples, float bsdf_samples,
                           const SideMedia& media) {
     // Where the choice allows it, the light sample's first coordinate chooses the light
@@ -90,8 +90,8 @@ Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
         ctx.lights.remaps_choice() ? ctx.lights.sample_remapped(u.x, &u_x)
                                    : ctx.lights.sample(ShadingPoint{sp.p, sd.ng}, u_light);
     if (!chosen) return Spectrum(0);
-    return sample_chosen_light(ctx, sp, sd, wo, time, sampler, &*chosen, Vec2(u_x, u.y),
-                               strategy, light_samples, bsdf_samples, media);
+    return sample_chosen_light(ctx, sp, sd, wo, time, sampler.sampler(), &*chosen,
+                               Vec2(u_x, u.y), strategy, light_samples, bsdf_samples, media);
 }
 
 Spectrum sample_light_stratified(const RenderContext& ctx, const SurfacePoint& sp,

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "core/sampling/path_sampler.h"
 #include "core/surface_point.h"
 #include "integrators/integrator.h"
 #include "integrators/path_media.h"
@@ -49,7 +50,7 @@ bool unoccluded(const RenderContext& ctx, const Ray& shadow, Sampler& sampler);
 // times the transmittance of the medium the shadow ray starts in (media: wo's side for
 // reflection, the far side for transmission; surfaces on the way block it).
 Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
-                          const ShadingData& sd, Vec3 wo, float time, Sampler& sampler,
+                          const ShadingData& sd, Vec3 wo, float time, PathSampler& sampler,
                           LightStrategy strategy, float light_samples = 1,
                           float bsdf_samples = 1, const SideMedia& media = {});
 

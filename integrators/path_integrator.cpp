@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/sampling/path_sampler.h"
 #include "integrators/direct_lighting.h"
 
 namespace penumbra {
@@ -58,6 +59,7 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         return bounces <= 1 ? m_options.clamp_direct : m_options.clamp_indirect;
     };
     MaterialOptions materials = ctx.materials;
+    PathSampler draws(sampler);
     for (;;) {
         // The given hit is the camera ray's own: after an alpha pass-through, trace again.
         const std::optional<Hit> hit =
@@ -116,14 +118,14 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         const Vec3 wo = sd.frame.to_local(wo_world);
         const SideMedia sides =
             kMedia ? side_media(ctx, media.stack, sp.material, sd.front_face) : SideMedia{};
-        L += clamped(beta * sample_one_light(ctx, sp, sd, wo, ray.time, sampler, strategy, 1, 1,
+        L += clamped(beta * sample_one_light(ctx, sp, sd, wo, ray.time, draws, strategy, 1, 1,
                                              sides),
                      clamp_for(depth + 1));
 
         // The square first, then the lobe choice: the order GCC gave the two calls as
         // arguments (unspecified in C++), written out so every compiler draws the same.
-        const Vec2 u_dir = sampler.get_2d();
-        const float u_lobe = sampler.get_1d();
+        const Vec2 u_dir = draws.get_2d();
+        const float u_lobe = draws.get_1d();
         const std::optional<BsdfSample> bs = bsdf.sample(wo, u_lobe, u_dir, Transport::Radiance);
         if (!bs) break;
         const Vec3 wi_world = sd.frame.to_world(bs->wi);
@@ -152,7 +154,7 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
             // survivors (throughput then 1) face a cut at every further bounce; 9-10% better
             // relMSE x time on the Lambertian Cornell box (docs/performance.md).
             const float p = std::min(1.0f, std::sqrt(max_component(beta) * eta_scale));
-            if (sampler.get_1d() < 1 - p) break;
+            if (draws.get_1d() < 1 - p) break;
             beta /= p;
         }
         const RayCone cone = bounce_cone(ray.cone, sp.cone_width, bs->pdf, bs->is_specular());
