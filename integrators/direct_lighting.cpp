@@ -52,7 +52,12 @@ Spectrum sample_chosen_light(const RenderContext& ctx, const SurfacePoint& sp,
     // leaks (spawn_ray then keeps rays the facet's plane puts behind from leaking).
     if ((wi.z > 0) != (dot(ls->wi, side_normal(sp, sd.ng)) > 0)) return Spectrum(0);
     const Bsdf& bsdf = *sd.bsdf.get();
-    const Spectrum f = bsdf.eval(wo, wi, Transport::Radiance) *
+    // The BSDF's density for the MIS weight comes with f where the weight needs it (one
+    // pass over the shared terms), so only after the shadow ray is it read.
+    const bool weighted = !ls->delta && strategy == LightStrategy::Mis;
+    float bsdf_pdf = 0;
+    const Spectrum f = (weighted ? bsdf.eval_pdf(wo, wi, Transport::Radiance, &bsdf_pdf)
+                                 : bsdf.eval(wo, wi, Transport::Radiance)) *
                        bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, ls->wi);
     if (is_black(f)) return Spectrum(0);
     const Ray shadow = spawn_ray(sp, ls->wi, ls->dist, time);
@@ -61,10 +66,8 @@ Spectrum sample_chosen_light(const RenderContext& ctx, const SurfacePoint& sp,
     if (const Medium* medium = wi.z > 0 ? media.wo_side : media.far_side)
         tr = medium->transmittance(shadow, ls->dist);
     const float light_pdf = chosen->pmf * ls->pdf;
-    float w = 1;
-    if (!ls->delta && strategy == LightStrategy::Mis)
-        w = power_heuristic(light_samples, light_pdf, bsdf_samples,
-                            bsdf.pdf(wo, wi, Transport::Radiance));
+    const float w =
+        weighted ? power_heuristic(light_samples, light_pdf, bsdf_samples, bsdf_pdf) : 1.0f;
     return f * tr * ls->Li * (std::abs(wi.z) * w / light_pdf);
 }
 

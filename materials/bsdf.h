@@ -30,6 +30,12 @@ public:
     virtual Spectrum eval(Vec3 wo, Vec3 wi, Transport mode) const = 0;
     // Solid-angle density with which sample() returns wi; 0 for specular lobes.
     virtual float pdf(Vec3 wo, Vec3 wi, Transport mode) const = 0;
+    // eval() and pdf() at once, bit for bit the same values: what a light sample weighed
+    // by MIS needs. BSDFs whose two share work (the half vector, D(h)) compute it once.
+    virtual Spectrum eval_pdf(Vec3 wo, Vec3 wi, Transport mode, float* pdf_out) const {
+        *pdf_out = pdf(wo, wi, mode);
+        return eval(wo, wi, mode);
+    }
     // u_lobe chooses a lobe, u the direction within it. Empty: no valid sample.
     virtual std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Vec2 u,
                                              Transport mode) const = 0;

@@ -319,6 +319,15 @@ float MetalRoughBsdf::pdf(Vec3 wo, Vec3 wi, Transport) const {
     return ps * spec + (1 - ps) * cosine_hemisphere_pdf(wi);
 }
 
+Spectrum MetalRoughBsdf::eval_pdf(Vec3 wo, Vec3 wi, Transport, float* pdf_out) const {
+    // eval()'s and pdf()'s guard, then their shared expressions (the next function).
+    if (wo.z <= 0 || wi.z <= 0) {
+        *pdf_out = 0;
+        return Spectrum(0);
+    }
+    return eval_pdf(wo_terms(wo), wo, wi, pdf_out);
+}
+
 Spectrum MetalRoughBsdf::eval_pdf(const WoTerms& t, Vec3 wo, Vec3 wi, float* pdf) const {
     if (m_lambert) {
         *pdf = cosine_hemisphere_pdf(wi);

@@ -59,6 +59,7 @@ public:
     explicit MetalRoughBsdf(const MetalRoughParams& p);
     Spectrum eval(Vec3 wo, Vec3 wi, Transport mode) const override;
     float pdf(Vec3 wo, Vec3 wi, Transport mode) const override;
+    Spectrum eval_pdf(Vec3 wo, Vec3 wi, Transport mode, float* pdf_out) const override;
     std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Vec2 u,
                                      Transport mode) const override;
     bool has_specular() const override { return m_delta; }

@@ -161,9 +161,10 @@ TEST(MetalRoughBsdf, SampleAgreesWithEvalAndPdf) {
 
 // The BSDF keeps wo's terms between calls and sample() evaluates f and pdf together:
 // neither may change a value. One object asked about interleaved wo's (and sampled)
-// answers bit for bit what a fresh object answers each time, and a sample's f and pdf
-// are eval's and pdf's exactly; over both layerings, both distributions, anisotropy,
-// films, mirrors, metals and the bare Lambertian base.
+// answers bit for bit what a fresh object answers each time, and a sample's f and pdf,
+// like eval_pdf()'s (the light sample's MIS), are eval's and pdf's exactly; over both
+// layerings, both distributions, anisotropy, films, mirrors, metals and the bare
+// Lambertian base.
 TEST(MetalRoughBsdf, KeptWoTermsChangeNoValue) {
     Rng rng(29);
     for (int i = 0; i < 210; ++i) {
@@ -192,6 +193,16 @@ TEST(MetalRoughBsdf, KeptWoTermsChangeNoValue) {
             ASSERT_EQ(f.z, f_ref.z) << what;
             ASSERT_EQ(kept.pdf(wo, wi, Transport::Radiance),
                       fresh2.pdf(wo, wi, Transport::Radiance)) << what;
+            for (const Vec3 w : {wi, Vec3(wi.x, wi.y, -wi.z)}) {  // and below the horizon
+                const MetalRoughBsdf fresh6(p), fresh7(p);
+                float pdf_both;
+                const Spectrum f_both = kept.eval_pdf(wo, w, Transport::Radiance, &pdf_both);
+                const Spectrum f_alone = fresh6.eval(wo, w, Transport::Radiance);
+                ASSERT_EQ(f_both.x, f_alone.x) << what;
+                ASSERT_EQ(f_both.y, f_alone.y) << what;
+                ASSERT_EQ(f_both.z, f_alone.z) << what;
+                ASSERT_EQ(pdf_both, fresh7.pdf(wo, w, Transport::Radiance)) << what;
+            }
             const float u_lobe = rng.next_float();
             const Vec2 u(rng.next_float(), rng.next_float());
             const auto s = kept.sample(wo, u_lobe, u, Transport::Radiance);
