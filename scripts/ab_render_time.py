@@ -1,0 +1,76 @@
+#!/usr/bin/env python3
+"""Render time of two penumbra binaries, side by side: each round runs A and B at the same
+time, one thread each, pinned to different cores (taskset), and swaps the cores the next
+round. Both then see the same machine: a VM's slow spells last seconds to minutes, and
+runs one after the other did not resolve 2% through them (docs/performance.md, ninth
+session). Prints each round's render seconds and B / A, then the median ratio.
+
+  python3 scripts/ab_render_time.py OLD/penumbra build/bin/penumbra --rounds 8 -- \\
+      render scenes/glossy.gltf --width 128 --spp 128 --filter box
+
+Needs two cores; the render arguments must not set -o, --threads or --overwrite. The
+render line gives hundredths of a second: choose renders of a second or more.
+"""
+import argparse
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+import threading
+
+
+def render_seconds(binary, core, args, out):
+    cmd = ["taskset", "-c", str(core), binary] + args + [
+        "-o", out, "--threads", "1", "--no-preview", "--overwrite"]
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    m = re.search(r"render ([0-9.]+)s", p.stdout + p.stderr)
+    if p.returncode != 0 or not m:
+        raise RuntimeError("%s failed (exit %d):\n%s" % (" ".join(cmd), p.returncode,
+                                                         p.stderr[-2000:]))
+    return float(m.group(1))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("a", help="the baseline binary")
+    ap.add_argument("b", help="the binary measured against it")
+    ap.add_argument("--rounds", type=int, default=8)
+    argv = sys.argv[1:]
+    split = argv.index("--") if "--" in argv else len(argv)
+    opts = ap.parse_args(argv[:split])
+    args = argv[split + 1:]  # penumbra's own, after --
+    if not args:
+        ap.error("give penumbra's arguments after --")
+    ratios = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for i in range(opts.rounds):
+            cores = {"a": i % 2, "b": 1 - i % 2}
+            seconds, errors = {}, []
+
+            def run(key, binary):
+                try:
+                    seconds[key] = render_seconds(binary, cores[key], args,
+                                                  os.path.join(tmp, key + ".exr"))
+                except RuntimeError as e:  # a thread cannot exit the process
+                    errors.append(str(e))
+
+            threads = [threading.Thread(target=run, args=("a", opts.a)),
+                       threading.Thread(target=run, args=("b", opts.b))]
+            for t in threads:
+                t.start()
+            for t in threads:
+                t.join()
+            if errors:
+                sys.exit("\n".join(errors))
+            ratios.append(seconds["b"] / seconds["a"])
+            print("round %d: A %.3f s (core %d), B %.3f s (core %d), B / A %.3f"
+                  % (i + 1, seconds["a"], cores["a"], seconds["b"], cores["b"], ratios[-1]),
+                  flush=True)
+    print("median B / A %.3f over %d rounds (min %.3f, max %.3f)"
+          % (statistics.median(ratios), len(ratios), min(ratios), max(ratios)))
+
+
+if __name__ == "__main__":
+    main()
