@@ -45,9 +45,9 @@ public:
     // What a node is, structure of arrays over its children: the bounds the importance
     // reads, precomputed (centroid, squared half-diagonal, sin theta_o) so the descent
     // does no trigonometry and no per-box work.
-    struct alignas(32) Node {
+    struct alignas(16) Node {  // 16: the SSE loads of importance4
         float cx[kWidth], cy[kWidth], cz[kWidth];  // box centroid
-        float r2[kWidth], r[kWidth];               // half-diagonal of the box, squared
+        float r[kWidth], r2[kWidth];               // half-diagonal of the box, its square
         float inv_r2[kWidth];                      // 1 / max(r2, 1e-20)
         float phi[kWidth];                         // 0: empty slot
         float wx[kWidth], wy[kWidth], wz[kWidth];  // cone axis
