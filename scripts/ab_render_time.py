@@ -3,7 +3,9 @@
 time, one thread each, pinned to different cores (taskset), and swaps the cores the next
 round. Both then see the same machine: a VM's slow spells last seconds to minutes, and
 runs one after the other did not resolve 2% through them (docs/performance.md, ninth
-session). Prints each round's render seconds and B / A, then the median ratio.
+session). Prints each round's render seconds and B / A, then the median ratio, and the
+median over pairs of rounds of their geometric mean: a pair has run each binary on each
+core, so a core that is slower than the other (35% for minutes, on this VM) cancels.
 
   python3 scripts/ab_render_time.py OLD/penumbra build/bin/penumbra --rounds 8 -- \\
       render scenes/glossy.gltf --width 128 --spp 128 --filter box
@@ -12,6 +14,7 @@ Needs two cores; the render arguments must not set -o, --threads or --overwrite.
 render line gives hundredths of a second: choose renders of a second or more.
 """
 import argparse
+import math
 import os
 import re
 import statistics
@@ -36,7 +39,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("a", help="the baseline binary")
     ap.add_argument("b", help="the binary measured against it")
-    ap.add_argument("--rounds", type=int, default=8)
+    ap.add_argument("--rounds", type=int, default=8, help="an even number: rounds pair up")
     argv = sys.argv[1:]
     split = argv.index("--") if "--" in argv else len(argv)
     opts = ap.parse_args(argv[:split])
@@ -68,8 +71,16 @@ def main():
             print("round %d: A %.3f s (core %d), B %.3f s (core %d), B / A %.3f"
                   % (i + 1, seconds["a"], cores["a"], seconds["b"], cores["b"], ratios[-1]),
                   flush=True)
+    # A round's ratio carries the two cores' speeds: on this VM one core has run 35%
+    # slower than the other for minutes. Two consecutive rounds swap the cores, so the
+    # geometric mean of their ratios cancels that factor.
+    pairs = [math.sqrt(ratios[i] * ratios[i + 1]) for i in range(0, len(ratios) - 1, 2)]
     print("median B / A %.3f over %d rounds (min %.3f, max %.3f)"
           % (statistics.median(ratios), len(ratios), min(ratios), max(ratios)))
+    if pairs:
+        print("median B / A %.3f over %d core-swapped pairs (geometric mean of each pair; "
+              "min %.3f, max %.3f)" % (statistics.median(pairs), len(pairs), min(pairs),
+                                       max(pairs)))
 
 
 if __name__ == "__main__":
