@@ -29,8 +29,8 @@ import time
 
 from efficiency_metrics import EPSILON, efficiency, median, read_rgb, reference_relmse, relmse
 from efficiency_metrics import average
-from efficiency_render import (Cache, cycles_identity, cycles_renders, penumbra_identity,
-                               penumbra_render)
+from efficiency_render import (Cache, CyclesSession, cycles_identity, cycles_renders,
+                               interleave, penumbra_identity, penumbra_render)
 from efficiency_scenes import ALL, QUICK, ROOT, prepare
 
 REF_SEEDS = (1001, 1002)
@@ -57,6 +57,10 @@ def parse_args(argv):
     ap.add_argument("--retime", action="store_true",
                     help="render every timed render again (keep the references): the cache "
                          "keeps each render's time, so a run under another load would mix loads")
+    ap.add_argument("--interleave", action="store_true",
+                    help="alternate the renderers per (spp, seed), Blender waiting between its "
+                         "renders, so that both see the same minutes of a machine whose speed "
+                         "drifts (else all of penumbra's renders, then all of Cycles')")
     ap.add_argument("--reuse-references", action="store_true",
                     help="use a cached reference made by another penumbra/Blender build")
     ap.add_argument("--cache", default=os.path.join(
@@ -103,33 +107,53 @@ def reference(args, cache, renderer):
 
 
 def render_scene(args, name, identities):
-    """Renders what the cache lacks; returns per renderer its caches and reference paths."""
+    """Renders what the cache lacks; returns per renderer its caches and reference paths.
+    penumbra's 1-spp render comes first (it gives Cycles the camera, and penumbra's fixed
+    cost inside render_seconds); then, with --interleave, the two renderers' timed renders
+    alternate per (spp, seed) (efficiency_render.interleave), else all of penumbra's and
+    then all of Cycles'."""
     prepared = prepare(name, os.path.join(args.cache, "scenes"))
-    out = {}
+    out, todo = {}, {}
     for renderer in RENDERERS:
         if renderer not in args.renderers and renderer != "penumbra":
             continue
         cache = Cache(args.cache, name, prepared, identities[renderer],
                       settings(args, renderer))
         refs = reference(args, cache, renderer)
-        todo = [(args.ref_spp // 2, seed) for seed, p in zip(REF_SEEDS, refs)
-                if not os.path.exists(p + ".json")]
-        todo += [(spp, seed) for spp in args.spp for seed in range(1, args.repeats + 1)
-                 if not cache.done(spp, seed)]
-        if renderer == "penumbra":
-            if "penumbra" not in args.renderers:  # only the camera for Cycles
-                todo = []
-            # 1 spp: the camera for Cycles, and penumbra's fixed cost inside render_seconds.
-            todo += [] if cache.done(1, 1) else [(1, 1)]
-            for spp, seed in todo:
-                log("%s: penumbra %d spp, seed %d" % (name, spp, seed))
-                penumbra_render(args, prepared, cache, spp, seed)
-            camera = cache.path(1, 1)
-        else:
-            if todo:
-                log("%s: Cycles %s" % (name, ", ".join("%d spp seed %d" % t for t in todo)))
-            cycles_renders(args, name, prepared, cache, camera, todo)
+        todo[renderer] = [(args.ref_spp // 2, seed) for seed, p in zip(REF_SEEDS, refs)
+                          if not os.path.exists(p + ".json")]
+        todo[renderer] += [(spp, seed) for spp in args.spp
+                           for seed in range(1, args.repeats + 1) if not cache.done(spp, seed)]
         out[renderer] = (cache, refs)
+    if "penumbra" not in args.renderers:  # only the camera for Cycles
+        todo["penumbra"] = []
+    penumbra_cache = out["penumbra"][0]
+
+    def penumbra(spp, seed):
+        log("%s: penumbra %d spp, seed %d" % (name, spp, seed))
+        penumbra_render(args, prepared, penumbra_cache, spp, seed)
+
+    if not penumbra_cache.done(1, 1):
+        penumbra(1, 1)
+    camera = penumbra_cache.path(1, 1)
+    cycles_todo = todo.get("cycles", [])
+    if args.interleave and cycles_todo:
+        steps = interleave(todo["penumbra"], cycles_todo)
+        session = CyclesSession(args, name, prepared, out["cycles"][0], camera,
+                                [key for r, key in steps if r == "cycles"], paced=True)
+        for renderer, (spp, seed) in steps:
+            if renderer == "penumbra":
+                penumbra(spp, seed)
+            else:
+                log("%s: Cycles %d spp, seed %d" % (name, spp, seed))
+                session.render_next()
+        session.finish()
+        return out
+    for spp, seed in todo["penumbra"]:
+        penumbra(spp, seed)
+    if cycles_todo:
+        log("%s: Cycles %s" % (name, ", ".join("%d spp seed %d" % t for t in cycles_todo)))
+        cycles_renders(args, name, prepared, out["cycles"][0], camera, cycles_todo)
     return out
 
 
@@ -227,7 +251,7 @@ def main(argv):
     report = ["penumbra %s (commit %s, sampler %s%s) against Cycles (%s, sampling pattern %s, "
               "no light tree in 3.4); %d px wide, "
               "max depth %d, %d threads, box filter; reference %d spp; relMSE epsilon %g; "
-              "%d repeat(s) per spp (relMSE mean, time median); load average %.2f %.2f %.2f; "
+              "%d repeat(s) per spp (relMSE mean, time median)%s; load average %.2f %.2f %.2f; "
               "%.0f s in all." % (
                   identities["penumbra"]["version"], identities["penumbra"]["commit"],
                   sampler(results, "penumbra"),
@@ -235,6 +259,7 @@ def main(argv):
                   identities.get("cycles", {}).get("version", "not run"),
                   sampler(results, "cycles"), args.size,
                   args.max_depth, args.threads, args.ref_spp, EPSILON, args.repeats,
+                  ", renderers interleaved per (spp, seed)" if args.interleave else "",
                   load[0], load[1], load[2], time.time() - started), "", table(results, args)]
     worst = max((r["ref_share"] for per in results.values() for rows in per.values()
                  if isinstance(rows, list) for r in rows if not math.isnan(r["ref_share"])),

@@ -6,7 +6,9 @@ JOB.json: scene, width, height, world_to_camera, world_to_ndc (penumbra's EXR he
 cycles_import_render.py), max_depth, threads, materials ("exact": Lambertian, emission and
 sharp mirror rebuilt as cycles_render.py does, else the importer's Principled BSDF), world
 (null: black; [r, g, b]: uniform; a path: an equirectangular image), renders
-[{spp, seed, out}]. Prints "EFFICIENCY {json}" with the times, or "EFFICIENCY-ERROR ..." and
+[{spp, seed, out}], paced (optional: before each render print "EFFICIENCY-READY" and wait
+for a line "go" on stdin, after it print "EFFICIENCY-RENDERED"; efficiency.py
+--interleave). Prints "EFFICIENCY {json}" with the times, or "EFFICIENCY-ERROR ..." and
 exits 2.
 Timing: the wall time of each render here includes Cycles' scene sync (BVH, images); the
 driver takes the path-tracing time alone from Cycles' status lines (efficiency_render.py).
@@ -193,10 +195,20 @@ def render(spp, seed):
 _, cpu_1spp = render(1, 0)
 walls, cpus = [], []
 for r in job["renders"]:
+    if job.get("paced"):
+        # efficiency.py --interleave: penumbra renders while this process waits here.
+        print("EFFICIENCY-READY")
+        sys.stdout.flush()
+        if sys.stdin.readline().strip() != "go":
+            fail("the driver stopped before the render of %d spp, seed %d"
+                 % (r["spp"], r["seed"]))
     wall, cpu = render(r["spp"], r["seed"])
     walls.append(wall)
     cpus.append(cpu)
     bpy.data.images["Render Result"].save_render(r["out"])
+    if job.get("paced"):
+        print("EFFICIENCY-RENDERED")
+        sys.stdout.flush()
 print("EFFICIENCY " + json.dumps({
     "setup_s": setup_s, "render_wall_s": walls, "render_cpu_s": cpus, "cpu_1spp_s": cpu_1spp,
     "sampling_pattern": c.sampling_pattern, "version": bpy.app.version_string}))

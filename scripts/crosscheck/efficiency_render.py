@@ -158,50 +158,120 @@ def cycles_path_tracing_seconds(log):
     return out
 
 
+def interleave(penumbra_todo, cycles_todo):
+    """The order of efficiency.py --interleave: each (spp, seed) that both renderers render,
+    by one and then at once by the other, the first of the two alternating, so that both
+    see the same minutes of a machine whose speed drifts (docs/performance.md, ninth
+    session) and neither always goes first; the renders only one of them needs are in
+    their place. Returns [(renderer, (spp, seed))]."""
+    steps, both = [], 0
+    keys = list(penumbra_todo) + [k for k in cycles_todo if k not in penumbra_todo]
+    for key in keys:
+        pair = [r for r, todo in (("penumbra", penumbra_todo), ("cycles", cycles_todo))
+                if key in todo]
+        if len(pair) == 2:
+            if both % 2:
+                pair.reverse()
+            both += 1
+        steps += [(r, key) for r in pair]
+    return steps
+
+
+class CyclesSession:
+    """One Blender process (one import and sync) that renders every (spp, seed) of todo, in
+    order. With paced, efficiency_cycles.py waits before each render until render_next()
+    says go, and that returns when it has rendered: efficiency.py --interleave runs
+    penumbra's renders in between. finish() waits for the process and files the images
+    and their times in the cache. command replaces Blender's (tests)."""
+
+    def __init__(self, args, name, prepared, cache, camera_exr, todo, paced=False,
+                 command=None):
+        self.args, self.cache, self.todo, self.lines = args, cache, list(todo), []
+        if not self.todo:
+            self.proc = None
+            return
+        attrs = exr_attributes(camera_exr)
+        width, height = (int(v) for v in attrs["resolution"].split("x"))
+        job = {"scene": os.path.abspath(prepared["scene"]), "width": width, "height": height,
+               "world_to_camera": floats(attrs["worldToCamera"]),
+               "world_to_ndc": floats(attrs["worldToNDC"]), "max_depth": args.max_depth,
+               "threads": args.threads, "materials": SCENES[name]["materials"],
+               "world": cycles_world(name, prepared), "paced": paced,
+               "renders": [{"spp": s, "seed": d, "out": cache.path(s, d) + ".tmp.exr"}
+                           for s, d in self.todo]}
+        job_path = os.path.join(cache.dir, "job.json")
+        with open(job_path, "w") as f:
+            json.dump(job, f)
+        self.start = time.time()
+        self.paused_s = 0.0  # time spent on penumbra's renders between paced ones
+        command = command or ["blender", "-b", "--factory-startup", "-P",
+                              os.path.join(HERE, "efficiency_cycles.py"), "--"]
+        self.proc = subprocess.Popen(command + [job_path], stdin=subprocess.PIPE,
+                                     stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                     text=True, env=blender_env())
+        self.waiting_since = None
+
+    def _read_until(self, prefix):
+        for line in self.proc.stdout:
+            self.lines.append(line)
+            if line.startswith("EFFICIENCY-ERROR "):
+                raise RuntimeError("Cycles: " + line[len("EFFICIENCY-ERROR "):].strip())
+            if line.startswith(prefix):
+                return
+        tail = "".join(self.lines).strip().splitlines()[-5:]
+        raise RuntimeError("blender exit %s before %s: %s"
+                           % (self.proc.wait(), prefix, " / ".join(tail)))
+
+    def render_next(self):
+        """A paced session's next render: waits until Blender is ready, lets it render and
+        waits until it has."""
+        self._read_until("EFFICIENCY-READY")
+        if self.waiting_since is not None:
+            self.paused_s += time.time() - self.waiting_since
+        self.proc.stdin.write("go\n")
+        self.proc.stdin.flush()
+        self._read_until("EFFICIENCY-RENDERED")
+        self.waiting_since = time.time()
+
+    def finish(self):
+        if self.proc is None:
+            return
+        try:
+            out, _ = self.proc.communicate(timeout=self.args.timeout * len(self.todo))
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+            raise
+        self.lines.append(out)
+        log = "".join(self.lines)
+        wall = time.time() - self.start - self.paused_s
+        info = None
+        for line in log.splitlines():
+            if line.startswith("EFFICIENCY-ERROR "):
+                raise RuntimeError("Cycles: " + line[len("EFFICIENCY-ERROR "):])
+            if line.startswith("EFFICIENCY "):
+                info = json.loads(line[len("EFFICIENCY "):])
+        if info is None:
+            tail = log.strip().splitlines()[-5:]
+            raise RuntimeError("blender exit %s: %s" % (self.proc.returncode, " / ".join(tail)))
+        render_s = cycles_path_tracing_seconds(log)[1:]  # the first: the 1-spp render
+        if len(render_s) != len(self.todo):
+            raise RuntimeError("Cycles: %d renders finished, %d expected"
+                               % (len(render_s), len(self.todo)))
+        # Whole process for one render: Blender's start and import shared out, plus that
+        # render with its sync.
+        overhead = (wall - sum(info["render_wall_s"])) / len(self.todo)
+        for (spp, seed), seconds, render_wall, cpu in zip(
+                self.todo, render_s, info["render_wall_s"], info["render_cpu_s"]):
+            out = self.cache.path(spp, seed)
+            os.replace(out + ".tmp.exr", out)
+            times = {"render_s": seconds, "render_wall_s": render_wall,
+                     "process_s": overhead + render_wall, "setup_s": info["setup_s"],
+                     "cpu_s": cpu, "cpu_1spp_s": info["cpu_1spp_s"],
+                     "sampler": info["sampling_pattern"], "version": info["version"]}
+            with open(out + ".json", "w") as f:
+                json.dump(times, f)
+
+
 def cycles_renders(args, name, prepared, cache, camera_exr, todo):
-    """Renders every (spp, seed) of todo in one Blender process (one import and sync)."""
-    if not todo:
-        return
-    attrs = exr_attributes(camera_exr)
-    width, height = (int(v) for v in attrs["resolution"].split("x"))
-    job = {"scene": os.path.abspath(prepared["scene"]), "width": width, "height": height,
-           "world_to_camera": floats(attrs["worldToCamera"]),
-           "world_to_ndc": floats(attrs["worldToNDC"]), "max_depth": args.max_depth,
-           "threads": args.threads, "materials": SCENES[name]["materials"],
-           "world": cycles_world(name, prepared),
-           "renders": [{"spp": s, "seed": d, "out": cache.path(s, d) + ".tmp.exr"}
-                       for s, d in todo]}
-    job_path = os.path.join(cache.dir, "job.json")
-    with open(job_path, "w") as f:
-        json.dump(job, f)
-    start = time.time()
-    p = subprocess.run(["blender", "-b", "--factory-startup", "-P",
-                        os.path.join(HERE, "efficiency_cycles.py"), "--", job_path],
-                       capture_output=True, text=True, timeout=args.timeout * len(todo),
-                       env=blender_env())
-    wall = time.time() - start
-    info = None
-    for line in p.stdout.splitlines():
-        if line.startswith("EFFICIENCY-ERROR "):
-            raise RuntimeError("Cycles: " + line[len("EFFICIENCY-ERROR "):])
-        if line.startswith("EFFICIENCY "):
-            info = json.loads(line[len("EFFICIENCY "):])
-    if info is None:
-        tail = (p.stdout + p.stderr).strip().splitlines()[-5:]
-        raise RuntimeError("blender exit %s: %s" % (p.returncode, " / ".join(tail)))
-    render_s = cycles_path_tracing_seconds(p.stdout)[1:]  # the first: the 1-spp render
-    if len(render_s) != len(todo):
-        raise RuntimeError("Cycles: %d renders finished, %d expected" % (len(render_s), len(todo)))
-    # Whole process for one render: Blender's start and import shared out, plus that render
-    # with its sync.
-    overhead = (wall - sum(info["render_wall_s"])) / len(todo)
-    for (spp, seed), seconds, render_wall, cpu in zip(todo, render_s, info["render_wall_s"],
-                                                       info["render_cpu_s"]):
-        out = cache.path(spp, seed)
-        os.replace(out + ".tmp.exr", out)
-        times = {"render_s": seconds, "render_wall_s": render_wall,
-                 "process_s": overhead + render_wall, "setup_s": info["setup_s"],
-                 "cpu_s": cpu, "cpu_1spp_s": info["cpu_1spp_s"],
-                 "sampler": info["sampling_pattern"], "version": info["version"]}
-        with open(out + ".json", "w") as f:
-            json.dump(times, f)
+    """Renders every (spp, seed) of todo in one Blender process, one after the other."""
+    CyclesSession(args, name, prepared, cache, camera_exr, todo).finish()

@@ -20,7 +20,8 @@ sys.path[:0] = [os.path.join(ROOT, "scripts", "crosscheck"), os.path.join(ROOT, 
 
 from efficiency_metrics import (EPSILON, average, efficiency, median, read_rgb,  # noqa: E402
                                 reference_relmse, relmse, write_pfm)
-from efficiency_render import Cache, cycles_path_tracing_seconds, status_seconds  # noqa: E402
+from efficiency_render import (Cache, CyclesSession, cycles_path_tracing_seconds,  # noqa: E402
+                               interleave, status_seconds)
 from efficiency_scenes import ALL, QUICK, SCENES, prepare  # noqa: E402
 
 PIXELS = 3 * 4096
@@ -167,6 +168,82 @@ class Retime(unittest.TestCase):
                 self.assertTrue(cache.done(16, 1))                  # rendered in this run
             finally:
                 Cache.retime_since = None
+
+
+# A stand-in for Blender running efficiency_cycles.py with a paced job: the same protocol
+# and output lines, each render a line in the shared log (argv[1]) and a stand-in image.
+FAKE_BLENDER = r"""
+import json, sys, time
+log, job = sys.argv[1], json.load(open(sys.argv[2]))
+def line(text):
+    print(text)
+    sys.stdout.flush()
+walls = []
+for i, r in enumerate([{"spp": 1, "seed": 0, "out": None}] + job["renders"]):
+    if i and job.get("paced"):
+        line("EFFICIENCY-READY")
+        if sys.stdin.readline().strip() != "go":
+            line("EFFICIENCY-ERROR stopped")
+            sys.exit(2)
+    line("Fra:1 | Time:00:0%d.00 | Mem:1M | Scene | Sample 0/%d" % (i, r["spp"]))
+    line("Fra:1 | Time:00:0%d.50 | Mem:1M | Scene | Sample %d/%d" % (i, r["spp"], r["spp"]))
+    line("Fra:1 | Time:00:0%d.50 | Mem:1M | Scene | Finished" % i)
+    if r["out"]:
+        open(log, "a").write("cycles %d %d\n" % (r["spp"], r["seed"]))
+        open(r["out"], "w").write("image")
+        walls.append(0.5)
+        if job.get("paced"):
+            line("EFFICIENCY-RENDERED")
+line("EFFICIENCY " + json.dumps({"setup_s": 0.1, "render_wall_s": walls,
+     "render_cpu_s": [1.0] * len(walls), "cpu_1spp_s": 0.2, "sampling_pattern": "FAKE",
+     "version": "fake"}))
+"""
+
+
+class Interleave(unittest.TestCase):
+    def test_order_alternates_which_renderer_goes_first_and_keeps_single_renders(self):
+        p = [(512, 1001), (16, 1), (16, 2), (64, 1)]
+        c = [(16, 1), (16, 2), (64, 1), (64, 2)]
+        self.assertEqual(interleave(p, c), [
+            ("penumbra", (512, 1001)),
+            ("penumbra", (16, 1)), ("cycles", (16, 1)),
+            ("cycles", (16, 2)), ("penumbra", (16, 2)),
+            ("penumbra", (64, 1)), ("cycles", (64, 1)),
+            ("cycles", (64, 2))])
+        self.assertEqual(interleave([], c), [("cycles", k) for k in c])
+
+    def test_paced_session_renders_each_one_when_told_and_files_its_times(self):
+        class Args:
+            max_depth, threads, timeout = 8, 2, 60
+        with tempfile.TemporaryDirectory() as root:
+            cache = Cache(root, "cornell", {"hash": "h"}, {"key": "fake"}, {"spp": 1})
+            camera = os.path.join(root, "camera.exr")
+            header = {"worldToCamera": " ".join(["1"] * 16), "worldToNDC": " ".join(["1"] * 16)}
+            write_pfm(os.path.join(root, "c.pfm"), 4, 2, [0.5] * 24)
+            subprocess.run(["oiiotool", os.path.join(root, "c.pfm")] +
+                           sum([["--attrib:type=matrix", k, v] for k, v in header.items()], []) +
+                           ["-o", camera], check=True, capture_output=True)
+            log = os.path.join(root, "log")
+            fake = os.path.join(root, "fake_blender.py")
+            open(fake, "w").write(FAKE_BLENDER)
+            todo = [(16, 1), (16, 2)]
+            session = CyclesSession(Args, "cornell", {"scene": "s.gltf", "env": None}, cache,
+                                    camera, todo, paced=True,
+                                    command=[sys.executable, fake, log])
+            for spp, seed in todo:
+                open(log, "a").write("penumbra %d %d\n" % (spp, seed))
+                session.render_next()
+            session.finish()
+            self.assertEqual(open(log).read().split("\n"),
+                             ["penumbra 16 1", "cycles 16 1", "penumbra 16 2", "cycles 16 2", ""])
+            job = json.load(open(os.path.join(cache.dir, "job.json")))
+            self.assertTrue(job["paced"])
+            self.assertEqual((job["width"], job["height"]), (4, 2))
+            for spp, seed in todo:
+                self.assertTrue(cache.done(spp, seed))
+                times = cache.times(spp, seed)
+                self.assertAlmostEqual(times["render_s"], 0.5)
+                self.assertEqual(times["cpu_s"], 1.0)
 
 
 class HallScene(unittest.TestCase):
