@@ -116,7 +116,7 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
         // KHR_materials_unlit: the base colour (factor x texture x vertex colour) as
         // emitted radiance, and nothing reflected (see shade() in material.h).
         sd.emission = sd.base_color;
-        sd.bsdf.emplace(LambertianBsdf(Spectrum(0)));
+        sd.bsdf.emplace<LambertianBsdf>(Spectrum(0));
         return sd;
     }
 
@@ -178,7 +178,7 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
 
     if (!layered && metallic == 0 && specular == 0 && transmission == 0) {
         // KHR_materials_specular with factor 0 and no metal: exactly Lambertian.
-        sd.bsdf.emplace(LambertianBsdf(sd.base_color));
+        sd.bsdf.emplace<LambertianBsdf>(sd.base_color);
         return sd;
     }
     roughness = std::clamp(std::max(roughness, options.min_roughness), 0.0f, 1.0f);
@@ -219,9 +219,9 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     const bool opaque = transmission == 0 || metallic == 1;
     if (!layered) {
         if (opaque) {
-            sd.bsdf.emplace(MetalRoughBsdf(p));
+            sd.bsdf.emplace<MetalRoughBsdf>(p);
         } else {
-            sd.bsdf.emplace(GltfTransmissionBsdf(p, transmission, d, !volume));
+            sd.bsdf.emplace<GltfTransmissionBsdf>(p, transmission, d, !volume);
         }
         return sd;
     }
@@ -259,7 +259,7 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
         clearcoat = ClearcoatLobe(coat, coat_roughness * coat_roughness, normalize(nc),
                                   options.gltf_distribution);
     }
-    sd.bsdf.emplace(GltfBsdf(core, sheen, clearcoat));
+    sd.bsdf.emplace<GltfBsdf>(core, sheen, clearcoat);
     return sd;
 }
 

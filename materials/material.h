@@ -2,6 +2,7 @@
 // builds the shading frame (with the normal map) and the BSDF that integrators use.
 #pragma once
 
+#include <utility>
 #include <variant>
 
 #include "core/math/frame.h"
@@ -30,8 +31,12 @@ public:
         m_bsdf = o.m_bsdf ? held() : nullptr;
         return *this;
     }
-    template <typename T>
-    void emplace(const T& bsdf) { m_bsdf = &m_v.template emplace<T>(bsdf); }
+    // Constructs the model in place from its constructor's arguments: a model built
+    // first and then copied in moved its few hundred bytes twice per hit.
+    template <typename T, typename... Args>
+    void emplace(Args&&... args) {
+        m_bsdf = &m_v.template emplace<T>(std::forward<Args>(args)...);
+    }
     // Null before emplace.
     const Bsdf* get() const { return m_bsdf; }
 
