@@ -11,6 +11,7 @@ import os
 import re
 import resource
 import subprocess
+import threading
 import time
 
 from compare_cycles import blender_env
@@ -236,12 +237,17 @@ class CyclesSession:
     def finish(self):
         if self.proc is None:
             return
+        # The rest of the output through the same buffered reader that render_next()
+        # used: communicate() reads the pipe itself and would lose what that reader
+        # already holds. A timer stands in for communicate()'s timeout.
+        self.proc.stdin.close()
+        timer = threading.Timer(self.args.timeout * len(self.todo), self.proc.kill)
+        timer.start()
         try:
-            out, _ = self.proc.communicate(timeout=self.args.timeout * len(self.todo))
-        except subprocess.TimeoutExpired:
-            self.proc.kill()
-            raise
-        self.lines.append(out)
+            self.lines.extend(self.proc.stdout)
+            self.proc.wait()
+        finally:
+            timer.cancel()
         log = "".join(self.lines)
         wall = time.time() - self.start - self.paused_s
         info = None
