@@ -12,6 +12,7 @@
 #include "core/media/medium_set.h"
 #include "core/sampling/sampler.h"
 #include "core/scene/scene.h"
+#include "materials/bsdf_prototypes.h"
 #include "materials/material.h"
 
 namespace penumbra {
@@ -19,21 +20,29 @@ namespace penumbra {
 // What an integrator traces against: the scene data, its accelerator and its lights.
 // The scene's media are built here, from its materials, so that every render (CLI,
 // tests, benchmarks) sees the same volumes.
+// The materials' BSDF prototypes are built here too, and materials points to them.
 struct RenderContext {
     RenderContext(const Scene& scene, const Accel& accel, const LightSet& lights,
                   bool has_alpha = false, const MaterialOptions& materials = {})
         : scene(scene), accel(accel), lights(lights), has_alpha(has_alpha),
-          materials(materials), media(scene), has_volumes(media.any()) {}
+          materials(materials), media(scene), has_volumes(media.any()),
+          prototypes(std::make_shared<const BsdfPrototypes>(scene, materials)) {
+        this->materials.prototypes = prototypes.get();
+    }
 
     const Scene& scene;
     const Accel& accel;
     const LightSet& lights;
     bool has_alpha = false;  // some material is MASK or BLEND: rays test coverage
-    MaterialOptions materials{};  // how glTF materials become BSDFs (--microfacet)
+    // How glTF materials become BSDFs (--microfacet). A caller that changes the
+    // distribution or layering afterwards gets no prototypes (BsdfPrototypes::find).
+    MaterialOptions materials{};
     MediumSet media;  // the interior of each material with a volume
     // Some material has a volume (and so possibly dispersion): without one, the path
     // tracer skips its media bookkeeping for the whole render.
     bool has_volumes = false;
+    // Shared by copies, so that each copy's materials.prototypes stays valid.
+    std::shared_ptr<const BsdfPrototypes> prototypes;
 };
 
 // Which strategies estimate light from non-delta emitters in "path": both with MIS, or

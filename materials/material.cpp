@@ -6,6 +6,7 @@
 
 #include "core/media/medium_set.h"
 #include "core/scene/emission.h"
+#include "materials/bsdf_prototypes.h"
 #include "materials/dispersion.h"
 #include "materials/fresnel.h"
 #include "materials/specular_inputs.h"
@@ -148,6 +149,15 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     if (emits_towards(m, front_normal(sp), wo)) {
         const Spectrum e = m.emissive * m.emissive_strength;
         sd.emission = is_black(e) ? e : emitted_radiance(scene, m, sp.uv0, sp.uv1, sp.uv_width);
+    }
+
+    // A material that is the same at every hit has its model built already.
+    if (options.prototypes) {
+        if (const BsdfStorage* proto = options.prototypes->find(uint32_t(sp.material), sp.color,
+                                                                options)) {
+            sd.bsdf = *proto;
+            return sd;
+        }
     }
 
     float transmission = m.transmission;

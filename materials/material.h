@@ -48,6 +48,8 @@ private:
     const Bsdf* m_bsdf = nullptr;
 };
 
+class BsdfPrototypes;
+
 struct ShadingData {
     Frame frame;          // z = shading normal (normal-mapped), on the side of wo
     Vec3 ng;              // geometric normal, on the side of wo
@@ -70,6 +72,9 @@ struct MaterialOptions {
     // The least roughness of the specular and clearcoat lobes: the path tracer's
     // regularization raises it after a rough bounce (IntegratorOptions). 0: as authored.
     float min_roughness = 0;
+    // Models built once per material where nothing varies over the surface
+    // (bsdf_prototypes.h; RenderContext owns them); null: build every hit's.
+    const BsdfPrototypes* prototypes = nullptr;
 };
 
 // What a path knows about the volumes around a hit (integrators/path_media.h).
