@@ -72,6 +72,20 @@ float GltfBsdf::pdf(Vec3 wo, Vec3 wi, Transport mode) const {
     return p;
 }
 
+Spectrum GltfBsdf::eval_pdf(Vec3 wo, Vec3 wi, Transport mode, float* pdf_out) const {
+    // eval()'s and pdf()'s expressions in their order, so that the values are theirs.
+    float core_pdf;
+    Spectrum below = core().eval_pdf(wo, wi, mode, &core_pdf);
+    const Choice c = choose(wo);
+    float p = c.core * core_pdf;
+    if (c.sheen > 0) p += c.sheen * m_sheen->pdf(wo, wi);
+    if (c.coat > 0) p += c.coat * m_coat->pdf(wo, wi);
+    *pdf_out = p;
+    if (m_sheen) below = m_sheen->eval(wo, wi) + below * sheen_scale(wo, wi);
+    if (!m_coat) return below;
+    return Spectrum(m_coat->eval(wo, wi, mode)) + below * coat_scale(wo, wi);
+}
+
 std::optional<BsdfSample> GltfBsdf::sample(Vec3 wo, float u_lobe, Vec2 u, Transport mode) const {
     const Choice c = choose(wo);
     std::optional<Vec3> wi;
@@ -105,7 +119,8 @@ std::optional<BsdfSample> GltfBsdf::sample(Vec3 wo, float u_lobe, Vec2 u, Transp
         eta = s->eta;  // a rough refraction of the core
     }
     if (!wi) return std::nullopt;
-    BsdfSample s{*wi, eval(wo, *wi, mode), pdf(wo, *wi, mode), lobe, eta};
+    BsdfSample s{*wi, Spectrum(0), 0, lobe, eta};
+    s.f = eval_pdf(wo, *wi, mode, &s.pdf);
     if (!(s.pdf > 0)) return std::nullopt;
     return s;
 }

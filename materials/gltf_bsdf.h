@@ -36,6 +36,9 @@ public:
              const std::optional<ClearcoatLobe>& coat);
     Spectrum eval(Vec3 wo, Vec3 wi, Transport mode) const override;
     float pdf(Vec3 wo, Vec3 wi, Transport mode) const override;
+    // eval and pdf in one pass: the core's own eval_pdf (MetalRoughBsdf shares its half
+    // vector, D(h) and wo's terms), the same values bit for bit.
+    Spectrum eval_pdf(Vec3 wo, Vec3 wi, Transport mode, float* pdf_out) const override;
     std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Vec2 u, Transport mode) const override;
     bool has_specular() const override;
 

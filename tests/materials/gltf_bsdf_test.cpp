@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <sstream>
 #include <string>
 
@@ -173,6 +174,58 @@ TEST(GltfBsdf, SampleAgreesWithEvalAndPdf) {
             EXPECT_EQ(test::check_reciprocity(make(s), 100, i), "") << describe(s, wo);
         }
     }
+}
+
+// eval_pdf is eval and pdf in one pass: the same values bit for bit, for every core
+// (metal-rough, transmission, diffuse transmission) under every layer, above and below.
+TEST(GltfBsdf, EvalPdfIsEvalAndPdfBitForBit) {
+    Rng rng(47);
+    int compared = 0;
+    for (int i = 0; i < 200; ++i) {
+        Stack s;
+        s.metallic = i % 3 == 0 ? 0.0f : rng.next_float();
+        s.roughness = i % 5 == 0 ? 0.0f : rng.next_float();
+        s.transmission = i % 4 == 0 ? rng.next_float() : 0.0f;
+        s.coat = i % 2 ? rng.next_float() : 0.0f;
+        s.coat_roughness = i % 7 == 0 ? 0.0f : rng.next_float();
+        s.coat_normal = i % 3 == 1 ? kTilted : Vec3(0, 0, 1);
+        if (i % 3 != 2) s.sheen = {rng.next_float(), rng.next_float(), rng.next_float()};
+        s.sheen_roughness = rng.next_float();
+        GltfBsdf::Core core = core_of(s);
+        if (i % 6 == 5) {
+            MetalRoughParams p;
+            p.base_color = s.base;
+            p.metallic = 0;
+            p.alpha = s.roughness * s.roughness;
+            DiffuseTransmissionParams dt;
+            dt.factor = rng.next_float();
+            dt.color = {0.9f, 0.5f, 0.2f};
+            DielectricParams d;
+            d.alpha = p.alpha;
+            d.transmittance = s.base;
+            core = GltfDiffuseTransmissionBsdf(p, dt, s.transmission, d);
+        }
+        std::optional<SheenLobe> sheen;
+        if (max_component(s.sheen) > 0) sheen = SheenLobe(s.sheen, s.sheen_roughness);
+        std::optional<ClearcoatLobe> coat;
+        if (s.coat > 0)
+            coat = ClearcoatLobe(s.coat, s.coat_roughness * s.coat_roughness,
+                                 normalize(s.coat_normal), MicrofacetType::Ggx);
+        const GltfBsdf bsdf(core, sheen, coat);
+        const Vec3 wo = test::random_direction(rng, 0.01f, i % 9 == 0);
+        for (int k = 0; k < 30; ++k) {
+            const Vec3 wi = test::random_direction(rng, 0.01f, k % 4 == 0);
+            const Transport mode = k % 2 ? Transport::Radiance : Transport::Importance;
+            float pdf_both;
+            const Spectrum f_both = bsdf.eval_pdf(wo, wi, mode, &pdf_both);
+            const Spectrum f = bsdf.eval(wo, wi, mode);
+            const float pdf = bsdf.pdf(wo, wi, mode);
+            ASSERT_EQ(std::memcmp(&f_both, &f, sizeof f), 0) << describe(s, wo);
+            ASSERT_EQ(std::memcmp(&pdf_both, &pdf, sizeof pdf), 0) << describe(s, wo);
+            compared += pdf > 0;
+        }
+    }
+    EXPECT_GT(compared, 2000);  // most pairs have a density: the values are not all zero
 }
 
 // Layers add what they reflect and take it from the layers below: a white material
