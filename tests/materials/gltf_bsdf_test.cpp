@@ -153,18 +153,25 @@ TEST(GltfBsdf, CoatOverTransmissionSamplesFollowThePdf) {
         }
 }
 
+// Stack i of a random set: every layer on and off in turn, mirrors and tilted coats
+// among them.
+Stack random_stack(Rng& rng, int i) {
+    Stack s;
+    s.metallic = i % 3 == 0 ? 0.0f : rng.next_float();
+    s.roughness = i % 5 == 0 ? 0.0f : rng.next_float();
+    s.transmission = i % 4 == 0 ? rng.next_float() : 0.0f;
+    s.coat = i % 2 ? rng.next_float() : 0.0f;
+    s.coat_roughness = i % 7 == 0 ? 0.0f : rng.next_float();
+    s.coat_normal = i % 3 == 1 ? kTilted : Vec3(0, 0, 1);
+    if (i % 3 != 2) s.sheen = {rng.next_float(), rng.next_float(), rng.next_float()};
+    s.sheen_roughness = rng.next_float();
+    return s;
+}
+
 TEST(GltfBsdf, SampleAgreesWithEvalAndPdf) {
     Rng rng(31);
     for (int i = 0; i < 300; ++i) {
-        Stack s;
-        s.metallic = i % 3 == 0 ? 0.0f : rng.next_float();
-        s.roughness = i % 5 == 0 ? 0.0f : rng.next_float();
-        s.transmission = i % 4 == 0 ? rng.next_float() : 0.0f;
-        s.coat = i % 2 ? rng.next_float() : 0.0f;
-        s.coat_roughness = i % 7 == 0 ? 0.0f : rng.next_float();
-        s.coat_normal = i % 3 == 1 ? kTilted : Vec3(0, 0, 1);
-        if (i % 3 != 2) s.sheen = {rng.next_float(), rng.next_float(), rng.next_float()};
-        s.sheen_roughness = rng.next_float();
+        const Stack s = random_stack(rng, i);
         const Vec3 wo = test::random_direction(rng, 0.01f);
         EXPECT_EQ(test::check_sample_agreement(make(s), wo, 40, i, Transport::Radiance), "")
             << describe(s, wo);
@@ -182,15 +189,7 @@ TEST(GltfBsdf, EvalPdfIsEvalAndPdfBitForBit) {
     Rng rng(47);
     int compared = 0;
     for (int i = 0; i < 200; ++i) {
-        Stack s;
-        s.metallic = i % 3 == 0 ? 0.0f : rng.next_float();
-        s.roughness = i % 5 == 0 ? 0.0f : rng.next_float();
-        s.transmission = i % 4 == 0 ? rng.next_float() : 0.0f;
-        s.coat = i % 2 ? rng.next_float() : 0.0f;
-        s.coat_roughness = i % 7 == 0 ? 0.0f : rng.next_float();
-        s.coat_normal = i % 3 == 1 ? kTilted : Vec3(0, 0, 1);
-        if (i % 3 != 2) s.sheen = {rng.next_float(), rng.next_float(), rng.next_float()};
-        s.sheen_roughness = rng.next_float();
+        const Stack s = random_stack(rng, i);
         GltfBsdf::Core core = core_of(s);
         if (i % 6 == 5) {
             MetalRoughParams p;
