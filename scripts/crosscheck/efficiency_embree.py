@@ -15,27 +15,25 @@ import tempfile
 import time
 
 from efficiency_metrics import median
-from efficiency_render import Cache, children_cpu, cycles_renders, penumbra_render
+from efficiency_render import (Cache, CyclesSession, children_cpu, cycles_renders,
+                               penumbra_render)
 from efficiency_scenes import prepare
 
 ECS = "/usr/share/doc/embree3/models/cornell_box.ecs"
 SIZE, SPP, SEGMENTS = 256, 64, 8
 
 
-def embree_seconds(threads, repeats):
-    """(wall, CPU) seconds of each whole pathtracer run, or None when it is not installed."""
-    if not shutil.which("pathtracer") or not os.path.exists(ECS):
-        return None
-    out = []
-    with tempfile.TemporaryDirectory() as tmp:
-        for _ in range(repeats):
-            start, cpu = time.time(), children_cpu()
-            subprocess.run(["pathtracer", "-c", ECS, "--size", str(SIZE), str(SIZE), "--spp",
-                            str(SPP), "--max-path-length", str(SEGMENTS), "--threads",
-                            str(threads), "-o", os.path.join(tmp, "embree.ppm")],
-                           check=True, capture_output=True)
-            out.append((time.time() - start, children_cpu() - cpu))
-    return out
+def embree_available():
+    return bool(shutil.which("pathtracer")) and os.path.exists(ECS)
+
+
+def embree_run(threads, tmp):
+    """(wall, CPU) seconds of one whole pathtracer run."""
+    start, cpu = time.time(), children_cpu()
+    subprocess.run(["pathtracer", "-c", ECS, "--size", str(SIZE), str(SIZE), "--spp",
+                    str(SPP), "--max-path-length", str(SEGMENTS), "--threads", str(threads),
+                    "-o", os.path.join(tmp, "embree.ppm")], check=True, capture_output=True)
+    return time.time() - start, children_cpu() - cpu
 
 
 def timed_row(name, cache, seeds):
@@ -45,35 +43,71 @@ def timed_row(name, cache, seeds):
             median([t["process_s"] for t in times]), median([t["cpu_s"] for t in times]))
 
 
-def penumbra_row(name, scene, args, a, identities, seeds):
+def penumbra_cache(scene, args, identities):
     prepared = prepare(scene, os.path.join(args.cache, "scenes"))
-    pen = Cache(args.cache, scene, prepared, identities["penumbra"],
-                {"size": SIZE, "max_depth": SEGMENTS, "threads": args.threads,
-                 "extra": args.penumbra_args})
-    for seed in seeds:
-        if not pen.done(SPP, seed):
-            penumbra_render(a, prepared, pen, SPP, seed)
-    return prepared, pen, timed_row(name, pen, seeds)
+    return prepared, Cache(args.cache, scene, prepared, identities["penumbra"],
+                           {"size": SIZE, "max_depth": SEGMENTS, "threads": args.threads,
+                            "extra": args.penumbra_args})
 
 
 def embree_table(args, identities):
+    """The table's runs: penumbra on cornell-point, Cycles on it, penumbra on the
+    tutorial's own OBJ, light and camera (embree_cornell.py: the same work as the
+    tutorial, ray for ray up to the two renderers' sampling), and the tutorial. With
+    --interleave, one run of each per seed, the first of them turning round from seed to
+    seed; else each renderer's runs together."""
     a = copy.copy(args)
     a.size, a.max_depth = SIZE, SEGMENTS  # penumbra's --max-depth 8: 8 path segments
-    seeds = range(1, args.repeats + 1)
-    prepared, pen, row = penumbra_row("penumbra", "cornell-point", args, a, identities, seeds)
-    rows = [row]
+    seeds = list(range(1, args.repeats + 1))
+    prepared, pen = penumbra_cache("cornell-point", args, identities)
+    own = penumbra_cache("embree-cornell", args, identities) if os.path.exists(ECS) else None
+    cyc = None
     if "cycles" in args.renderers:
         cyc = Cache(args.cache, "cornell-point", prepared, identities["cycles"],
                     {"size": SIZE, "max_depth": SEGMENTS, "threads": args.threads})
-        cycles_renders(a, "cornell-point", prepared, cyc, pen.path(SPP, 1),
-                       [(SPP, s) for s in seeds if not cyc.done(SPP, s)])
+    embree = []
+    with tempfile.TemporaryDirectory() as tmp:
+        def penumbra(target, seed):
+            if not target[1].done(SPP, seed):
+                penumbra_render(a, target[0], target[1], SPP, seed)
+
+        if args.interleave:
+            # penumbra's first render gives Cycles its camera, so it opens seed 1.
+            penumbra((prepared, pen), seeds[0])
+            session = None
+            if cyc:
+                session = CyclesSession(a, "cornell-point", prepared, cyc, pen.path(SPP, 1),
+                                        [(SPP, s) for s in seeds if not cyc.done(SPP, s)],
+                                        paced=True)
+            for i, seed in enumerate(seeds):
+                steps = [lambda s=seed: penumbra((prepared, pen), s)]
+                if session and (SPP, seed) in session.todo:
+                    steps.append(session.render_next)
+                if own:
+                    steps.append(lambda s=seed: penumbra(own, s))
+                if embree_available():
+                    steps.append(lambda: embree.append(embree_run(args.threads, tmp)))
+                k = i % len(steps)
+                for step in steps[k:] + steps[:k]:
+                    step()
+            if session:
+                session.finish()
+        else:
+            for seed in seeds:
+                penumbra((prepared, pen), seed)
+            if cyc:
+                cycles_renders(a, "cornell-point", prepared, cyc, pen.path(SPP, 1),
+                               [(SPP, s) for s in seeds if not cyc.done(SPP, s)])
+            if own:
+                for seed in seeds:
+                    penumbra(own, seed)
+            if embree_available():
+                embree = [embree_run(args.threads, tmp) for _ in seeds]
+    rows = [timed_row("penumbra", pen, seeds)]
+    if cyc:
         rows.append(timed_row("Cycles", cyc, seeds))
-    # penumbra on the tutorial's own OBJ, light and camera (embree_cornell.py): the same
-    # work as the tutorial, ray for ray up to the two renderers' sampling.
-    if os.path.exists(ECS):
-        rows.append(penumbra_row("penumbra, the tutorial's scene", "embree-cornell", args, a,
-                                 identities, seeds)[2])
-    embree = embree_seconds(args.threads, args.repeats)
+    if own:
+        rows.append(timed_row("penumbra, the tutorial's scene", own[1], seeds))
     lines = ["Equal spp: Cornell box with a point light, %d x %d, %d spp, %d path segments, "
              "%d threads; medians of %d. CPU seconds: the whole process for penumbra and "
              "Embree, the render with its sync for Cycles." % (

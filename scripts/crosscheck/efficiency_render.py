@@ -249,7 +249,10 @@ class CyclesSession:
         finally:
             timer.cancel()
         log = "".join(self.lines)
-        wall = time.time() - self.start - self.paused_s
+        # A paced session's clock stops at its last render: what ran after it was the
+        # driver's (Blender's own exit goes uncounted there).
+        end = self.waiting_since if self.waiting_since is not None else time.time()
+        wall = end - self.start - self.paused_s
         info = None
         for line in log.splitlines():
             if line.startswith("EFFICIENCY-ERROR "):

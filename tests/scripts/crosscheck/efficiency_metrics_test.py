@@ -12,6 +12,7 @@ import random
 import subprocess
 import sys
 import tempfile
+import time
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -191,7 +192,7 @@ for i, r in enumerate([{"spp": 1, "seed": 0, "out": None}] + job["renders"]):
     if r["out"]:
         open(log, "a").write("cycles %d %d\n" % (r["spp"], r["seed"]))
         open(r["out"], "w").write("image")
-        walls.append(0.5)
+        walls.append(0.05)
         if job.get("paced"):
             line("EFFICIENCY-RENDERED")
 line("EFFICIENCY " + json.dumps({"setup_s": 0.1, "render_wall_s": walls,
@@ -232,7 +233,9 @@ class Interleave(unittest.TestCase):
                                     command=[sys.executable, fake, log])
             for spp, seed in todo:
                 open(log, "a").write("penumbra %d %d\n" % (spp, seed))
+                time.sleep(0.5)  # penumbra's render: not Cycles' process time
                 session.render_next()
+            time.sleep(1.0)  # the driver's work after Blender's last render
             session.finish()
             self.assertEqual(open(log).read().split("\n"),
                              ["penumbra 16 1", "cycles 16 1", "penumbra 16 2", "cycles 16 2", ""])
@@ -244,6 +247,9 @@ class Interleave(unittest.TestCase):
                 times = cache.times(spp, seed)
                 self.assertAlmostEqual(times["render_s"], 0.5)
                 self.assertEqual(times["cpu_s"], 1.0)
+                # The stand-in's reported 0.05 s plus its share of a start-up well under
+                # a second; the pauses (0.5 s, then 1 s) would add 0.75 s each.
+                self.assertLess(times["process_s"], 0.05 + 0.4)
 
 
 class HallScene(unittest.TestCase):
