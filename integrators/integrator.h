@@ -20,7 +20,9 @@ namespace penumbra {
 // What an integrator traces against: the scene data, its accelerator and its lights.
 // The scene's media are built here, from its materials, so that every render (CLI,
 // tests, benchmarks) sees the same volumes.
-// The materials' BSDF prototypes are built here too, and materials points to them.
+// The materials' BSDF prototypes are built here too, from the materials as they are
+// then (a context is made per render; the scene's materials must not change under it),
+// and materials points to them.
 struct RenderContext {
     RenderContext(const Scene& scene, const Accel& accel, const LightSet& lights,
                   bool has_alpha = false, const MaterialOptions& materials = {})
