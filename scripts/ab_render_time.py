@@ -7,6 +7,12 @@ session). Prints each round's render seconds and B / A, then the median ratio, a
 median over pairs of rounds of their geometric mean: a pair has run each binary on each
 core, so a core that is slower than the other (35% for minutes, on this VM) cancels.
 
+--sequential runs A and B one after the other on core 1, the other core idle, the first
+of each round alternating (AB, BA, ...). Side by side, the two processes share the VM's
+slow spells; on one spell (docs/performance.md, eleventh session) they also showed two
+binaries 3% apart that one after the other, and side by side an hour later, were equal.
+Confirm a gain under 5% both ways, at different times, before believing it.
+
   python3 scripts/ab_render_time.py OLD/penumbra build/bin/penumbra --rounds 8 -- \\
       render scenes/glossy.gltf --width 128 --spp 128 --filter box
 
@@ -40,6 +46,8 @@ def main():
     ap.add_argument("a", help="the baseline binary")
     ap.add_argument("b", help="the binary measured against it")
     ap.add_argument("--rounds", type=int, default=8, help="an even number: rounds pair up")
+    ap.add_argument("--sequential", action="store_true",
+                    help="one after the other on core 1 (AB, BA, ...), not side by side")
     argv = sys.argv[1:]
     split = argv.index("--") if "--" in argv else len(argv)
     opts = ap.parse_args(argv[:split])
@@ -49,7 +57,7 @@ def main():
     ratios = []
     with tempfile.TemporaryDirectory() as tmp:
         for i in range(opts.rounds):
-            cores = {"a": i % 2, "b": 1 - i % 2}
+            cores = {"a": 1, "b": 1} if opts.sequential else {"a": i % 2, "b": 1 - i % 2}
             seconds, errors = {}, []
 
             def run(key, binary):
@@ -61,23 +69,28 @@ def main():
 
             threads = [threading.Thread(target=run, args=("a", opts.a)),
                        threading.Thread(target=run, args=("b", opts.b))]
-            for t in threads:
-                t.start()
-            for t in threads:
-                t.join()
+            if opts.sequential:
+                for t in threads if i % 2 == 0 else threads[::-1]:
+                    t.start()
+                    t.join()
+            else:
+                for t in threads:
+                    t.start()
+                for t in threads:
+                    t.join()
             if errors:
                 sys.exit("\n".join(errors))
             ratios.append(seconds["b"] / seconds["a"])
             print("round %d: A %.3f s (core %d), B %.3f s (core %d), B / A %.3f"
                   % (i + 1, seconds["a"], cores["a"], seconds["b"], cores["b"], ratios[-1]),
                   flush=True)
-    # A round's ratio carries the two cores' speeds: on this VM one core has run 35%
-    # slower than the other for minutes. Two consecutive rounds swap the cores, so the
-    # geometric mean of their ratios cancels that factor.
+    # Side by side, a round's ratio carries the two cores' speeds: on this VM one core has
+    # run 35% slower than the other for minutes. Two consecutive rounds swap the cores, so
+    # the geometric mean of their ratios cancels that factor.
     pairs = [math.sqrt(ratios[i] * ratios[i + 1]) for i in range(0, len(ratios) - 1, 2)]
     print("median B / A %.3f over %d rounds (min %.3f, max %.3f)"
           % (statistics.median(ratios), len(ratios), min(ratios), max(ratios)))
-    if pairs:
+    if pairs and not opts.sequential:
         print("median B / A %.3f over %d core-swapped pairs (geometric mean of each pair; "
               "min %.3f, max %.3f)" % (statistics.median(pairs), len(pairs), min(pairs),
                                        max(pairs)))
