@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/math/atan2.h"
 #include "core/sampling/warp.h"
 
 namespace penumbra {
@@ -34,8 +35,8 @@ Vec2 EnvironmentLight::direction_to_uv(Vec3 w) const {
     const float x = m_cos_rot * w.x - m_sin_rot * w.z;
     const float z = m_sin_rot * w.x + m_cos_rot * w.z;
     // atan2 keeps theta accurate near the poles, where acos(y) loses digits.
-    const float theta = std::atan2(std::sqrt(x * x + z * z), w.y);
-    const float phi = std::atan2(-z, -x);
+    const float theta = atan2_fast(std::sqrt(x * x + z * z), w.y);
+    const float phi = atan2_fast(-z, -x);
     float u = phi * kInv2Pi + 0.5f;
     if (u >= 1) u -= 1;
     return {u, theta * kInvPi};
