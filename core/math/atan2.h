@@ -1,4 +1,4 @@
-// atan2 for float, inline and without branches: the environment light maps every
+// atan2 for float, inline, its octants by selects: the environment light maps every
 // direction it is asked about to its image with two of them, and libm's atan2f (a call,
 // with branches on the octant) was 7% of a 1-thread profile of FlightHelmet under a sky
 // (docs/performance.md, eleventh session). Also the same on every x86 machine, where
@@ -7,8 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 
 #include "core/math/vec.h"
 
