@@ -36,14 +36,18 @@ inline float bump_shadowing(Vec3 n_smooth, Vec3 n_bump, Vec3 wi) {
     return g > 1 - 1e-4f ? 1.0f : g * (1 + g - g * g);
 }
 
+// Moves `ray` on beyond the surface at sp, as if the surface were not there (alpha).
+void step_through(const SurfacePoint& sp, const ShadingData& sd, Ray& ray);
+
 // Stochastic transparency (glTF alpha MASK/BLEND) at a camera-path hit: true when the
 // ray passes through the surface with probability 1 - opacity; the ray then continues
 // from just beyond it. Draws a sample only for partial coverage.
 bool pass_through(const SurfacePoint& sp, const ShadingData& sd, Sampler& sampler, Ray& ray);
 
-// Whether the segment `ray` reaches its tmax unblocked. Surfaces with partial coverage
-// (alpha) block with probability alpha.
-bool unoccluded(const RenderContext& ctx, const Ray& shadow, Sampler& sampler);
+// The share of light that the segment `shadow` carries to its tmax: 0 when an opaque
+// surface blocks it, else the product of (1 - opacity) over the partly covered (alpha)
+// surfaces it crosses.
+float shadow_transmittance(const RenderContext& ctx, const Ray& shadow);
 
 // One light sample at the shading point, MIS-weighted against `bsdf_samples` BSDF samples
 // per `light_samples` light samples when strategy is Mis. Returns f * Li * |cos| * w / pdf,

@@ -97,10 +97,23 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         }
         const ShadingData sd = shade(ctx.scene, sp, wo_world, materials, volume);
 
-        // Without MASK or BLEND materials every opacity is 1: nothing passes.
-        if (kAlpha && pass_through(sp, sd, sampler, ray)) {
-            if (++passes > 256) break;  // a stack of holes ends the path
-            continue;
+        // Partial coverage (glTF BLEND, or a texture's alpha): the surface's share of the
+        // light, its coverage, is shaded here as a weight, and one coin then decides where
+        // the path goes on: straight through with probability 1 - coverage, else by the
+        // BSDF, beta unchanged either way (the probabilities cancel the shares). Cycles
+        // does the same with its transparent closure; flipping the coin first and shading
+        // all or nothing (as the direct integrator does) left a lens's own highlights
+        // as noisy as the coin. Without MASK or BLEND materials every coverage is 1.
+        float coverage = 1;
+        bool through = false;
+        if (kAlpha && sd.opacity < 1) {
+            coverage = std::max(sd.opacity, 0.0f);
+            through = !(coverage > 0) || draws.get_1d() >= coverage;
+            if (through && !(coverage > 0)) {  // a hole: nothing to shade
+                step_through(sp, sd, ray);
+                if (++passes > 256) break;  // a stack of holes ends the path
+                continue;
+            }
         }
 
         if (!is_black(sd.emission)) {
@@ -110,17 +123,24 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
                 w = emission_weight(ctx, light, prev_p, prev_n, &sp.p, wo_world * -1.0f,
                                     ray.time, bsdf_pdf, strategy);
             }
-            L += clamped(beta * sd.emission * w, clamp_for(depth));
+            L += clamped(beta * sd.emission * (w * coverage), clamp_for(depth));
         }
-        if (depth >= m_options.max_depth) break;
+        if (depth >= m_options.max_depth && !through) break;
 
         const Bsdf& bsdf = *sd.bsdf.get();
         const Vec3 wo = sd.frame.to_local(wo_world);
         const SideMedia sides =
             kMedia ? side_media(ctx, media.stack, sp.material, sd.front_face) : SideMedia{};
-        L += clamped(beta * sample_one_light(ctx, sp, sd, wo, ray.time, draws, strategy, 1, 1,
-                                             sides),
-                     clamp_for(depth + 1));
+        if (depth < m_options.max_depth)
+            L += clamped(beta * coverage *
+                             sample_one_light(ctx, sp, sd, wo, ray.time, draws, strategy, 1, 1,
+                                              sides),
+                         clamp_for(depth + 1));
+        if (through) {
+            step_through(sp, sd, ray);
+            if (++passes > 256) break;
+            continue;
+        }
 
         // The square first, then the lobe choice: the order GCC gave the two calls as
         // arguments (unspecified in C++), written out so every compiler draws the same.
