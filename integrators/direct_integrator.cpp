@@ -68,9 +68,10 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
             if (!h) {
                 const EnvironmentLight* env = ctx.lights.environment();
                 if (!env) continue;
-                Le = env->Le(wi_world);
-                w = emission_weight(ctx, env, sp.p, sd.ng, nullptr, wi_world, ray.time, bs->pdf,
-                                    strategy, nl, nb);
+                float env_pdf;
+                Le = env->Le(wi_world, &env_pdf);
+                w = emission_weight_for_pdf(ctx, env, sp.p, sd.ng, env_pdf, bs->pdf, strategy,
+                                            nl, nb);
             } else {
                 const SurfacePoint lp = make_surface_point(ctx.scene, r, *h);
                 const MaterialDesc& m = ctx.scene.material(lp.material);

@@ -151,7 +151,17 @@ float emission_weight(const RenderContext& ctx, const Light* light, Vec3 prev_p,
         light_pdf = static_cast<const TriangleLight*>(light)->pdf_at(ref, *hit_p, time);
     else
         light_pdf = light->pdf_Li(ref, wi, time);
-    light_pdf *= ctx.lights.pmf(ref, light);
+    return emission_weight_for_pdf(ctx, light, prev_p, prev_n, light_pdf, bsdf_pdf, strategy,
+                                   light_samples, bsdf_samples);
+}
+
+float emission_weight_for_pdf(const RenderContext& ctx, const Light* light, Vec3 prev_p,
+                              Vec3 prev_n, float light_pdf, float bsdf_pdf,
+                              LightStrategy strategy, float light_samples, float bsdf_samples) {
+    if (strategy == LightStrategy::BsdfOnly) return 1;
+    if (strategy == LightStrategy::LightOnly) return 0;
+    if (!light) return 1;
+    light_pdf *= ctx.lights.pmf(ShadingPoint{prev_p, prev_n}, light);
     return power_heuristic(bsdf_samples, bsdf_pdf, light_samples, light_pdf);
 }
 

@@ -73,5 +73,11 @@ Spectrum sample_light_stratified(const RenderContext& ctx, const SurfacePoint& s
 float emission_weight(const RenderContext& ctx, const Light* light, Vec3 prev_p, Vec3 prev_n,
                       const Vec3* hit_p, Vec3 wi, float time, float bsdf_pdf,
                       LightStrategy strategy, float light_samples = 1, float bsdf_samples = 1);
+// The same where the caller has the light's density for the ray already (light_pdf,
+// before the light set's choice of the light): the environment's Le(w, &pdf).
+float emission_weight_for_pdf(const RenderContext& ctx, const Light* light, Vec3 prev_p,
+                              Vec3 prev_n, float light_pdf, float bsdf_pdf,
+                              LightStrategy strategy, float light_samples = 1,
+                              float bsdf_samples = 1);
 
 }  // namespace penumbra

@@ -79,10 +79,13 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         if (!hit) {
             if (const EnvironmentLight* env = ctx.lights.environment()) {
                 const Vec3 wi = normalize(ray.d);
-                const float w = unweighted ? 1.0f
-                                           : emission_weight(ctx, env, prev_p, prev_n, nullptr,
-                                                             wi, ray.time, bsdf_pdf, strategy);
-                L += clamped(beta * env->Le(wi) * w, clamp_for(depth));
+                float w = 1, env_pdf;
+                // Weighted, Le and the density come from one mapping of wi to the image.
+                const Spectrum Le = unweighted ? env->Le(wi) : env->Le(wi, &env_pdf);
+                if (!unweighted)
+                    w = emission_weight_for_pdf(ctx, env, prev_p, prev_n, env_pdf, bsdf_pdf,
+                                                strategy);
+                L += clamped(beta * Le * w, clamp_for(depth));
             }
             break;
         }

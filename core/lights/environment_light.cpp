@@ -68,6 +68,16 @@ Spectrum EnvironmentLight::Le(Vec3 w) const {
     return texel_radiance(direction_to_uv(w));
 }
 
+Spectrum EnvironmentLight::Le(Vec3 w, float* pdf) const {
+    if (m_image.width == 0) {
+        *pdf = is_black(m_constant) ? 0.0f : uniform_sphere_pdf();
+        return m_constant;
+    }
+    const Vec2 uv = direction_to_uv(w);
+    *pdf = uv_pdf(uv);
+    return texel_radiance(uv);
+}
+
 std::optional<LightSample> EnvironmentLight::sample_Li(const ShadingPoint&, Vec2 u,
                                                        float) const {
     constexpr float inf = std::numeric_limits<float>::infinity();

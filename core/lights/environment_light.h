@@ -28,6 +28,9 @@ public:
     std::string describe() const override { return "environment"; }
     // Radiance arriving from direction w (unit, world), i.e. seen looking along w.
     Spectrum Le(Vec3 w) const;
+    // Le(w) and pdf_Li's density for w from one mapping of w to the image: a BSDF-sampled
+    // ray that escapes needs both, and the mapping (two atan2) is most of either.
+    Spectrum Le(Vec3 w, float* pdf) const;
 
     Vec2 direction_to_uv(Vec3 w) const;
     Vec3 uv_to_direction(Vec2 uv) const;
