@@ -36,16 +36,20 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         const bool front = dot(wo_world, sp.ng) >= 0;  // as shade() decides it
         const ShadingData sd = shade(ctx.scene, sp, wo_world, ctx.materials,
                                      path_volume(ctx, media, sp.material, front));
-        if (pass_through(sp, sd, sampler, ray)) {
+        const Coverage cover = partial_coverage(sd, sampler);
+        if (cover.through && !(cover.share > 0)) {  // a hole: nothing to shade
+            step_through(sp, sd, ray);
             if (++passes > 256) break;  // a stack of holes ends the path
             continue;
         }
-        L += beta * sd.emission;
+        // What this surface sends to the camera, weighted by its coverage.
+        const Spectrum shaded = beta * cover.share;
+        L += shaded * sd.emission;
         const Bsdf& bsdf = *sd.bsdf.get();
         const Vec3 wo = sd.frame.to_local(wo_world);
 
         const SideMedia sides = side_media(ctx, media.stack, sp.material, sd.front_face);
-        L += beta * sample_light_stratified(ctx, sp, sd, wo, ray.time, sampler,
+        L += shaded * sample_light_stratified(ctx, sp, sd, wo, ray.time, sampler,
                                             m_options.light_samples, strategy, nb, sides);
 
         // BSDF samples: emission they find, MIS-weighted against the light samples. They
@@ -82,8 +86,13 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
                 w = emission_weight(ctx, light, sp.p, sd.ng, &lp.p, wi_world, ray.time, bs->pdf,
                                     strategy, nl, nb);
             }
-            L += beta * bs->weight() * tr * Le *
+            L += shaded * bs->weight() * tr * Le *
                  (w / nb * bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, wi_world));
+        }
+        if (cover.through) {
+            step_through(sp, sd, ray);
+            if (++passes > 256) break;
+            continue;
         }
         // The specular part: one more sample, continued only when it picks a specular
         // lobe; its weight F / P(lobe) keeps that unbiased.

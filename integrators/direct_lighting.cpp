@@ -14,10 +14,10 @@ void step_through(const SurfacePoint& sp, const ShadingData& sd, Ray& ray) {
     ray.cone.width = sp.cone_width;  // the cone goes on from the hit
 }
 
-bool pass_through(const SurfacePoint& sp, const ShadingData& sd, Sampler& sampler, Ray& ray) {
-    if (sd.opacity >= 1 || (sd.opacity > 0 && sampler.get_1d() < sd.opacity)) return false;
-    step_through(sp, sd, ray);
-    return true;
+Coverage partial_coverage(const ShadingData& sd, Sampler& sampler) {
+    if (sd.opacity >= 1) return {};
+    if (!(sd.opacity > 0)) return {0, true};
+    return {sd.opacity, sampler.get_1d() >= sd.opacity};
 }
 
 float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {

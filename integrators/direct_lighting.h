@@ -36,13 +36,20 @@ inline float bump_shadowing(Vec3 n_smooth, Vec3 n_bump, Vec3 wi) {
     return g > 1 - 1e-4f ? 1.0f : g * (1 + g - g * g);
 }
 
-// Moves `ray` on beyond the surface at sp, as if the surface were not there (alpha).
-void step_through(const SurfacePoint& sp, const ShadingData& sd, Ray& ray);
+// Partial coverage (glTF alpha MASK/BLEND) at a path's hit. The surface's share of the
+// light, its coverage, is shaded there as a weight, and the path goes on straight through
+// with probability 1 - coverage, else as the surface sends it; the throughput is
+// unchanged either way, the probabilities cancelling the shares (Cycles' transparent
+// closure). Flipping the coin first and shading all or nothing left FlightHelmet's lenses
+// as noisy as the coin. Draws a sample only for 0 < coverage < 1.
+struct Coverage {
+    float share = 1;       // 1 opaque, 0 a hole (nothing to shade), else partial
+    bool through = false;  // the path goes on beyond the surface (step_through)
+};
+Coverage partial_coverage(const ShadingData& sd, Sampler& sampler);
 
-// Stochastic transparency (glTF alpha MASK/BLEND) at a camera-path hit: true when the
-// ray passes through the surface with probability 1 - opacity; the ray then continues
-// from just beyond it. Draws a sample only for partial coverage.
-bool pass_through(const SurfacePoint& sp, const ShadingData& sd, Sampler& sampler, Ray& ray);
+// Moves `ray` on beyond the surface at sp, as if the surface were not there.
+void step_through(const SurfacePoint& sp, const ShadingData& sd, Ray& ray);
 
 // The share of light that the segment `shadow` carries to its tmax: 0 when an opaque
 // surface blocks it, else the product of (1 - opacity) over the partly covered (alpha)

@@ -100,19 +100,11 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         }
         const ShadingData sd = shade(ctx.scene, sp, wo_world, materials, volume);
 
-        // Partial coverage (glTF BLEND, or a texture's alpha): the surface's share of the
-        // light, its coverage, is shaded here as a weight, and one coin then decides where
-        // the path goes on: straight through with probability 1 - coverage, else by the
-        // BSDF, beta unchanged either way (the probabilities cancel the shares). Cycles
-        // does the same with its transparent closure; flipping the coin first and shading
-        // all or nothing (as the direct integrator does) left a lens's own highlights
-        // as noisy as the coin. Without MASK or BLEND materials every coverage is 1.
-        float coverage = 1;
-        bool through = false;
-        if (kAlpha && sd.opacity < 1) {
-            coverage = std::max(sd.opacity, 0.0f);
-            through = !(coverage > 0) || draws.get_1d() >= coverage;
-            if (through && !(coverage > 0)) {  // a hole: nothing to shade
+        // Without MASK or BLEND materials every coverage is 1 and nothing passes.
+        Coverage cover;
+        if (kAlpha) {
+            cover = partial_coverage(sd, sampler);
+            if (cover.through && !(cover.share > 0)) {  // a hole: nothing to shade
                 step_through(sp, sd, ray);
                 if (++passes > 256) break;  // a stack of holes ends the path
                 continue;
@@ -126,20 +118,20 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
                 w = emission_weight(ctx, light, prev_p, prev_n, &sp.p, wo_world * -1.0f,
                                     ray.time, bsdf_pdf, strategy);
             }
-            L += clamped(beta * sd.emission * (w * coverage), clamp_for(depth));
+            L += clamped(beta * sd.emission * (w * cover.share), clamp_for(depth));
         }
-        if (depth >= m_options.max_depth && !through) break;
+        if (depth >= m_options.max_depth && !cover.through) break;
 
         const Bsdf& bsdf = *sd.bsdf.get();
         const Vec3 wo = sd.frame.to_local(wo_world);
         const SideMedia sides =
             kMedia ? side_media(ctx, media.stack, sp.material, sd.front_face) : SideMedia{};
         if (depth < m_options.max_depth)
-            L += clamped(beta * coverage *
+            L += clamped(beta * cover.share *
                              sample_one_light(ctx, sp, sd, wo, ray.time, draws, strategy, 1, 1,
                                               sides),
                          clamp_for(depth + 1));
-        if (through) {
+        if (cover.through) {
             step_through(sp, sd, ray);
             if (++passes > 256) break;
             continue;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "core/accel/embree_accel.h"
 #include "core/lights/point_light.h"
@@ -47,8 +48,9 @@ void add_plane(Scene& s, float y, int material) {
 }
 
 // n path samples along `ray`, each from its own sample index.
-std::vector<float> samples(const BlendScene& s, const Ray& ray, int n, IntegratorOptions o = {}) {
-    const auto integrator = make_integrator("path", o);
+std::vector<float> samples(const BlendScene& s, const Ray& ray, int n, IntegratorOptions o = {},
+                           const std::string& integrator_name = "path") {
+    const auto integrator = make_integrator(integrator_name, o);
     auto sampler = make_sampler(SamplerType::TabledSobol, 64, 3);
     const RenderContext ctx = s.context();
     std::vector<float> v;
@@ -93,7 +95,8 @@ TEST(AlphaCoverage, ShadowRaysCarryTheProductOfTransparencies) {
 
 // A sheet of coverage 0.4 in front of the camera over a black background: its emission
 // and the light it reflects from a point light in front count 0.4 of their whole in
-// every sample, however the coin then sends the path on.
+// every sample, however the coin then sends the path on (path tracing and distribution
+// ray tracing alike).
 TEST(AlphaCoverage, CameraPathsShadeTheCoveredShareInEverySample) {
     const float alpha = 0.4f, albedo = 0.8f, emission = 2, intensity = 5;
     for (const bool emissive : {true, false}) {
@@ -116,8 +119,9 @@ TEST(AlphaCoverage, CameraPathsShadeTheCoveredShareInEverySample) {
         const float expected = emissive ? alpha * emission
                                         : alpha * albedo / kPi * intensity *
                                               (to_light.z / std::sqrt(d2)) / d2;
-        for (const float v : samples(s, ray, 64))
-            ASSERT_NEAR(v, expected, 1e-5f) << (emissive ? "emissive" : "lit");
+        for (const char* integrator : {"path", "direct"})
+            for (const float v : samples(s, ray, 64, {}, integrator))
+                ASSERT_NEAR(v, expected, 1e-5f) << integrator << (emissive ? ", emissive" : ", lit");
     }
 }
 
