@@ -62,32 +62,42 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
             if (!bs || bs->is_specular()) continue;
             const Vec3 wi_world = sd.frame.to_world(bs->wi);
             if ((bs->wi.z > 0) != (dot(wi_world, side_normal(sp, sd.ng)) > 0)) continue;
-            const Ray r = spawn_ray(sp, wi_world, std::numeric_limits<float>::infinity(), ray.time);
-            const std::optional<Hit> h = ctx.accel.intersect(r);
-            Spectrum Le(0);
-            Spectrum tr(1);
-            const Medium* m = bs->wi.z > 0 ? sides.wo_side : sides.far_side;
-            if (m && h) tr = m->transmittance(r, h->t);
-            float w = 1;
-            if (!h) {
-                const EnvironmentLight* env = ctx.lights.environment();
-                if (!env) continue;
-                float env_pdf;
-                Le = env->Le(wi_world, &env_pdf);
-                w = emission_weight_for_pdf(ctx, env, sp.p, sd.ng, env_pdf, bs->pdf, strategy,
-                                            nl, nb);
-            } else {
+            Ray r = spawn_ray(sp, wi_world, std::numeric_limits<float>::infinity(), ray.time);
+            const Medium* medium = bs->wi.z > 0 ? sides.wo_side : sides.far_side;
+            // Emission the ray finds, through partly covered surfaces as the light samples'
+            // shadow rays go (clear: the transparency crossed so far), so that both
+            // strategies of MIS see an emitter behind a sheet alike.
+            Spectrum found(0);
+            float clear = 1;
+            for (int layer = 0; layer < 256 && clear > 0; ++layer) {
+                const std::optional<Hit> h = ctx.accel.intersect(r);
+                if (!h) {
+                    const EnvironmentLight* env = ctx.lights.environment();
+                    if (!env) break;
+                    float env_pdf;
+                    const Spectrum Le = env->Le(wi_world, &env_pdf);
+                    found += Le * (clear * emission_weight_for_pdf(ctx, env, sp.p, sd.ng, env_pdf,
+                                                                  bs->pdf, strategy, nl, nb));
+                    break;
+                }
                 const SurfacePoint lp = make_surface_point(ctx.scene, r, *h);
                 const MaterialDesc& m = ctx.scene.material(lp.material);
+                const float coverage = ctx.has_alpha ? surface_opacity(ctx.scene, lp) : 1.0f;
                 // Unlit surfaces emit their base colour but are not light-sampled.
-                if (!m.is_emissive() && !m.unlit) continue;
-                Le = shade(ctx.scene, lp, -wi_world).emission;
-                const Light* light = ctx.lights.triangle_light(h->instance, h->mesh, h->prim);
-                w = emission_weight(ctx, light, sp.p, sd.ng, &lp.p, wi_world, ray.time, bs->pdf,
-                                    strategy, nl, nb);
+                if (m.is_emissive() || m.unlit) {
+                    // An emitter with alpha sends its coverage's share, as light sampling has it.
+                    const Spectrum Le = shade(ctx.scene, lp, -wi_world).emission * coverage;
+                    const Light* light = ctx.lights.triangle_light(h->instance, h->mesh, h->prim);
+                    const float w = emission_weight(ctx, light, sp.p, sd.ng, &lp.p, wi_world,
+                                                    ray.time, bs->pdf, strategy, nl, nb);
+                    const Spectrum tr = medium ? medium->transmittance(r, h->t) : Spectrum(1);
+                    found += tr * Le * (clear * w);
+                }
+                clear *= 1 - coverage;
+                r.tmin = std::nextafter(h->t, std::numeric_limits<float>::infinity());
             }
-            L += shaded * bs->weight() * tr * Le *
-                 (w / nb * bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, wi_world));
+            L += shaded * bs->weight() * found *
+                 (1 / nb * bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, wi_world));
         }
         if (cover.through) {
             step_through(sp, sd, ray);

@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "core/media/medium_set.h"
+#include "core/scene/coverage.h"
 #include "core/scene/emission.h"
 #include "materials/bsdf_prototypes.h"
 #include "materials/dispersion.h"
@@ -67,23 +68,11 @@ Spectrum clamp01(Spectrum s) {
     return {std::clamp(s.x, 0.0f, 1.0f), std::clamp(s.y, 0.0f, 1.0f), std::clamp(s.z, 0.0f, 1.0f)};
 }
 
-float opacity_from_alpha(const MaterialDesc& m, float alpha) {
-    switch (m.alpha_mode) {
-        case AlphaMode::Opaque: return 1;
-        case AlphaMode::Mask: return alpha >= m.alpha_cutoff ? 1.0f : 0.0f;
-        case AlphaMode::Blend: return std::clamp(alpha, 0.0f, 1.0f);
-    }
-    return 1;
-}
-
 }  // namespace
 
 float surface_opacity(const Scene& scene, const SurfacePoint& sp) {
-    const MaterialDesc& m = scene.material(sp.material);
-    if (m.alpha_mode == AlphaMode::Opaque) return 1;
-    float alpha = m.base_color.w * sp.color.w;
-    if (m.base_color_texture.valid()) alpha *= sample_texture(scene, m.base_color_texture, sp).w;
-    return opacity_from_alpha(m, alpha);
+    return material_coverage(scene, scene.material(sp.material), sp.uv0, sp.uv1, sp.color.w,
+                             sp.uv_width);
 }
 
 bool scene_has_alpha(const Scene& scene) {
@@ -111,7 +100,7 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     Vec4 base = m.base_color * sp.color;
     if (m.base_color_texture.valid()) base = base * sample_texture(scene, m.base_color_texture, sp);
     sd.base_color = base.xyz();
-    sd.opacity = opacity_from_alpha(m, base.w);
+    sd.opacity = coverage_from_alpha(m, base.w);
 
     if (m.unlit) {
         // KHR_materials_unlit: the base colour (factor x texture x vertex colour) as

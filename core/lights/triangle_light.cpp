@@ -4,6 +4,7 @@
 
 #include "core/lights/spherical_triangle.h"
 #include "core/sampling/warp.h"
+#include "core/scene/coverage.h"
 #include "core/scene/emission.h"
 #include "core/scene/motion.h"
 
@@ -27,11 +28,13 @@ TriangleLight::TriangleLight(const Scene& scene, uint32_t instance, uint32_t mes
         p[k] = inst.to_world.point(mesh.positions[i]);
         m_uv0[k] = mesh.uv0.empty() ? Vec2() : mesh.uv0[i];
         m_uv1[k] = mesh.uv1.empty() ? Vec2() : mesh.uv1[i];
+        m_vertex_alpha[k] = mesh.colors.empty() ? 1.0f : mesh.colors[i].w;
     }
     m_static = place(p[0], p[1], p[2], inst.to_world.swaps_handedness());
     const MaterialDesc& mat = scene.material(m_material);
     m_Le = mat.emissive * mat.emissive_strength;  // as emitted_radiance starts
     m_textured = mat.emissive_texture.valid() && !is_black(m_Le);
+    m_covered = mat.alpha_mode != AlphaMode::Opaque;
     m_area = m_static.area;
     // Power only chooses among lights: any positive estimate keeps sampling unbiased,
     // so a moving triangle is weighed by its size at shutter open. A Lambertian emitter
@@ -79,10 +82,15 @@ float TriangleLight::solid_angle_pdf(Vec3 ref, Vec3 p, const Placed& t) const {
 }
 
 Spectrum TriangleLight::Le_at(float b0, float b1, float b2) const {
-    if (!m_textured) return m_Le;
+    if (!m_textured && !m_covered) return m_Le;
     const Vec2 uv0 = m_uv0[0] * b0 + m_uv0[1] * b1 + m_uv0[2] * b2;
     const Vec2 uv1 = m_uv1[0] * b0 + m_uv1[1] * b1 + m_uv1[2] * b2;
-    return emitted_radiance(*m_scene, m_scene->material(m_material), uv0, uv1);
+    const MaterialDesc& m = m_scene->material(m_material);
+    const Spectrum Le = m_textured ? emitted_radiance(*m_scene, m, uv0, uv1) : m_Le;
+    if (!m_covered) return Le;
+    const float alpha =
+        m_vertex_alpha[0] * b0 + m_vertex_alpha[1] * b1 + m_vertex_alpha[2] * b2;
+    return Le * material_coverage(*m_scene, m, uv0, uv1, alpha);
 }
 
 namespace {

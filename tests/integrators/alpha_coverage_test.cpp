@@ -1,18 +1,21 @@
-// Partial coverage (glTF alphaMode BLEND) in the path tracer: shadow rays carry the
-// product of the transparencies they cross, and a camera path shades a surface's
-// coverage as a weight before one coin sends it through or on by the BSDF. The first
-// two are exact, so each sample must equal the known value (a coin flip anywhere would
-// make samples 0 or the whole); the white furnace checks that the coin and the weights
-// together stay unbiased.
+// Coverage (glTF alphaMode MASK and BLEND) in the integrators: shadow rays carry the
+// product of the transparencies they cross, a camera path shades a surface's coverage as
+// a weight before one coin sends it through or on by the BSDF, and an emitter with alpha
+// sends light by its coverage. The first two are exact, so each sample must equal the
+// known value (a coin flip anywhere would make samples 0 or the whole); the white
+// furnace checks that the coin and the weights together stay unbiased.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "core/accel/embree_accel.h"
 #include "core/lights/point_light.h"
+#include "core/scene/coverage.h"
 #include "integrators/integrator.h"
 #include "support/estimate.h"
+#include "support/irradiance.h"
 #include "support/scene_builder.h"
 
 namespace penumbra {
@@ -32,12 +35,33 @@ void finish(BlendScene& s, std::unique_ptr<EnvironmentLight> env = nullptr) {
     s.lights = std::make_unique<LightSet>(s.scene, std::move(env));
 }
 
-// A material of the given coverage (BLEND, constant alpha).
-int add_blend(Scene& scene, Spectrum albedo, float alpha) {
+// A Lambertian material of constant alpha (BLEND unless told otherwise).
+int add_blend(Scene& scene, Spectrum albedo, float alpha, AlphaMode mode = AlphaMode::Blend) {
     const int m = test::add_lambertian(scene, albedo);
     scene.materials[m].base_color.w = alpha;
-    scene.materials[m].alpha_mode = AlphaMode::Blend;
+    scene.materials[m].alpha_mode = mode;
     return m;
+}
+
+TEST(AlphaCoverage, FollowsTheAlphaModes) {
+    MaterialDesc m;
+    m.alpha_cutoff = 0.3f;
+    for (const float alpha : {-0.5f, 0.0f, 0.29f, 0.3f, 0.8f, 1.5f}) {
+        m.alpha_mode = AlphaMode::Opaque;
+        EXPECT_EQ(coverage_from_alpha(m, alpha), 1.0f) << alpha;
+        m.alpha_mode = AlphaMode::Mask;  // glTF: rendered where alpha >= alphaCutoff
+        EXPECT_EQ(coverage_from_alpha(m, alpha), alpha >= 0.3f ? 1.0f : 0.0f) << alpha;
+        m.alpha_mode = AlphaMode::Blend;
+        EXPECT_EQ(coverage_from_alpha(m, alpha), std::clamp(alpha, 0.0f, 1.0f)) << alpha;
+    }
+    // The factor's alpha times COLOR_0's.
+    Scene scene;
+    m.alpha_mode = AlphaMode::Blend;
+    m.base_color = {1, 1, 1, 0.5f};
+    EXPECT_FLOAT_EQ(material_coverage(scene, m, {}, {}, 0.6f), 0.3f);
+    m.alpha_mode = AlphaMode::Mask;
+    EXPECT_EQ(material_coverage(scene, m, {}, {}, 0.58f), 0.0f);
+    EXPECT_EQ(material_coverage(scene, m, {}, {}, 0.62f), 1.0f);
 }
 
 // A horizontal square of half side 20 at height y, facing up.
@@ -67,11 +91,15 @@ TEST(AlphaCoverage, ShadowRaysCarryTheProductOfTransparencies) {
     const float albedo = 0.5f, intensity = 3;
     struct Case {
         float a1, a2;
+        AlphaMode mode1 = AlphaMode::Blend;  // of the lower sheet
+        float coverage1 = a1;
     };
-    for (const Case c : {Case{0.3f, 0.5f}, Case{0.3f, 0.0f}, Case{1.0f, 0.5f}, Case{0, 0}}) {
+    for (const Case c : {Case{0.3f, 0.5f}, Case{0.3f, 0.0f}, Case{1.0f, 0.5f}, Case{0, 0},
+                         Case{0.4f, 0.5f, AlphaMode::Mask, 0}, Case{0.6f, 0.5f, AlphaMode::Mask, 1},
+                         Case{0.4f, 0.5f, AlphaMode::Opaque, 1}}) {
         BlendScene s;
         add_plane(s.scene, 0, test::add_lambertian(s.scene, Spectrum(albedo)));
-        add_plane(s.scene, 1, add_blend(s.scene, Spectrum(0.8f), c.a1));
+        add_plane(s.scene, 1, add_blend(s.scene, Spectrum(0.8f), c.a1, c.mode1));
         add_plane(s.scene, 1.5f, add_blend(s.scene, Spectrum(0.8f), c.a2));
         s.scene.lights.push_back(std::make_unique<PointLight>(Vec3{0, 2, 0}, Spectrum(intensity)));
         finish(s);
@@ -83,12 +111,13 @@ TEST(AlphaCoverage, ShadowRaysCarryTheProductOfTransparencies) {
             const Vec3 to_light = Vec3{0, 2, 0} - p;
             const float d2 = dot(to_light, to_light), cos = to_light.y / std::sqrt(d2);
             const float expected =
-                albedo / kPi * intensity * cos / d2 * (1 - c.a1) * (1 - c.a2);
+                albedo / kPi * intensity * cos / d2 * (1 - c.coverage1) * (1 - c.a2);
             IntegratorOptions o;
             o.max_depth = 1;  // direct light only
             for (const float v : samples(s, ray, 64, o))
                 ASSERT_NEAR(v, expected, 1e-5f * intensity)
-                    << "alphas " << c.a1 << ", " << c.a2 << " at " << p.x << ", " << p.z;
+                    << "alphas " << c.a1 << " (mode " << int(c.mode1) << "), " << c.a2 << " at "
+                    << p.x << ", " << p.z;
         }
     }
 }
@@ -122,6 +151,58 @@ TEST(AlphaCoverage, CameraPathsShadeTheCoveredShareInEverySample) {
         for (const char* integrator : {"path", "direct"})
             for (const float v : samples(s, ray, 64, {}, integrator))
                 ASSERT_NEAR(v, expected, 1e-5f) << integrator << (emissive ? ", emissive" : ", lit");
+    }
+}
+
+// A square emitter of radiance 2 facing a Lambertian floor from height 1, of coverage
+// 0.4 itself or opaque behind a sheet of coverage 0.6 at height 0.5: the floor under its
+// centre sees 0.4 of the analytic irradiance, whether light sampling finds the emitter,
+// BSDF sampling, or both under MIS. (Light sampling counted an emitter's whole radiance
+// before, so MIS gave between 0.4 and 1 of it; the direct integrator's BSDF samples
+// stopped at the sheet, so it gave less than 0.4.)
+TEST(AlphaCoverage, EmittersLightByTheirCoverage) {
+    const float albedo = 0.5f, emission = 2;
+    for (const bool sheet : {false, true}) {
+        BlendScene s;
+        add_plane(s.scene, 0, test::add_lambertian(s.scene, Spectrum(albedo)));
+        const int m = add_blend(s.scene, Spectrum(0), sheet ? 1.0f : 0.4f);
+        s.scene.materials[m].emissive = Spectrum(emission);
+        // Counter-clockwise from below: the front faces the floor.
+        test::add_instance(s.scene,
+                           test::add_quad_object(s.scene, {-0.5f, 1, -0.5f}, {0.5f, 1, -0.5f},
+                                                 {0.5f, 1, 0.5f}, {-0.5f, 1, 0.5f}, m),
+                           Transform());
+        if (sheet) add_plane(s.scene, 0.5f, add_blend(s.scene, Spectrum(0.3f), 0.6f));
+        finish(s);
+        const double expected = 0.4 * albedo / kPi * test::square_irradiance(emission, 1, 1);
+        struct Config {
+            const char* integrator;
+            LightStrategy strategy;
+        };
+        for (const Config c :
+             {Config{"path", LightStrategy::Mis}, {"path", LightStrategy::LightOnly},
+              {"path", LightStrategy::BsdfOnly}, {"direct", LightStrategy::Mis}}) {
+            IntegratorOptions o;
+            o.strategy = c.strategy;
+            o.max_depth = 1;
+            const auto integrator = make_integrator(c.integrator, o);
+            auto sampler = make_sampler(SamplerType::Independent, 1, 7);
+            const RenderContext ctx = s.context();
+            const test::Estimate e = test::estimate(40000, [&](uint64_t i) {
+                sampler->start_pixel_sample({int(i), 0}, 0);
+                Ray r;
+                r.o = {0, 0.25f, 0};
+                r.d = {0, -1, 0};
+                return integrator->Li(r, ctx, *sampler).y;
+            });
+            EXPECT_TRUE(test::within(e, expected))
+                << (sheet ? "behind a sheet, " : "covered, ") << c.integrator << " "
+                << int(c.strategy) << ": " << e.mean << " +- " << e.std_error << ", expected "
+                << expected;
+            EXPECT_LT(e.std_error, (sheet ? 0.02 : 0.01) * expected)
+                << (sheet ? "behind a sheet, " : "covered, ") << c.integrator << " "
+                << int(c.strategy);
+        }
     }
 }
 
