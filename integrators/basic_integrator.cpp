@@ -12,7 +12,8 @@ Spectrum BasicIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
     const Accel& accel = ctx.accel;
     Spectrum L(0), throughput(1);
     Ray ray = camera_ray;
-    for (int depth = 0;; ++depth) {
+    int passes = 0;
+    for (int depth = 0;;) {
         const std::optional<Hit> hit = accel.intersect(ray);
         if (!hit) {
             if (const EnvironmentLight* env = ctx.lights.environment())
@@ -22,9 +23,17 @@ Spectrum BasicIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         const SurfacePoint sp = make_surface_point(scene, ray, *hit);
         const Vec3 wo_world = normalize(-ray.d);
         const ShadingData sd = shade(scene, sp, wo_world, ctx.materials);
+        // Alpha coverage as in the other integrators (direct_lighting.h).
+        const Coverage cover = partial_coverage(sd, sampler);
+        if (cover.through && !(cover.share > 0)) {  // a hole: nothing to shade
+            step_through(sp, sd, ray);
+            if (++passes > 256) break;
+            continue;
+        }
+        const Spectrum shaded = throughput * cover.share;
         const Bsdf* bsdf = sd.bsdf.get();
         const Vec3 wo = sd.frame.to_local(wo_world);
-        L += throughput * sd.emission;
+        L += shaded * sd.emission;
 
         // Direct light: one shadow ray per punctual light.
         const ShadingPoint ref{sp.p, sd.ng};
@@ -35,12 +44,18 @@ Spectrum BasicIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
             const Spectrum f = bsdf->eval(wo, wi, Transport::Radiance) *
                                bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, ls->wi);
             if (is_black(f)) continue;
-            if (accel.occluded(spawn_ray(sp, ls->wi, ls->dist, ray.time))) continue;
-            L += throughput * f * ls->Li * (std::abs(wi.z) / ls->pdf);
+            const float transparency = shadow_transmittance(ctx, spawn_ray(sp, ls->wi, ls->dist, ray.time));
+            if (!(transparency > 0)) continue;
+            L += shaded * f * ls->Li * (transparency * std::abs(wi.z) / ls->pdf);
+        }
+        if (cover.through) {
+            step_through(sp, sd, ray);
+            if (++passes > 256) break;
+            continue;
         }
 
         // Perfect specular reflection only; other lobes end the path.
-        if (depth + 1 >= m_options.max_depth || !bsdf->has_specular()) break;
+        if (++depth >= m_options.max_depth || !bsdf->has_specular()) break;
         const Vec2 u_dir = sampler.get_2d();  // first, as in PathIntegrator::trace
         const float u_lobe = sampler.get_1d();
         const std::optional<BsdfSample> bs = bsdf->sample(wo, u_lobe, u_dir, Transport::Radiance);

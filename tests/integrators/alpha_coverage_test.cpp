@@ -114,18 +114,19 @@ TEST(AlphaCoverage, ShadowRaysCarryTheProductOfTransparencies) {
                 albedo / kPi * intensity * cos / d2 * (1 - c.coverage1) * (1 - c.a2);
             IntegratorOptions o;
             o.max_depth = 1;  // direct light only
-            for (const float v : samples(s, ray, 64, o))
-                ASSERT_NEAR(v, expected, 1e-5f * intensity)
-                    << "alphas " << c.a1 << " (mode " << int(c.mode1) << "), " << c.a2 << " at "
-                    << p.x << ", " << p.z;
+            for (const char* integrator : {"path", "direct", "basic"})
+                for (const float v : samples(s, ray, 64, o, integrator))
+                    ASSERT_NEAR(v, expected, 1e-5f * intensity)
+                        << integrator << ", alphas " << c.a1 << " (mode " << int(c.mode1)
+                        << "), " << c.a2 << " at " << p.x << ", " << p.z;
         }
     }
 }
 
 // A sheet of coverage 0.4 in front of the camera over a black background: its emission
 // and the light it reflects from a point light in front count 0.4 of their whole in
-// every sample, however the coin then sends the path on (path tracing and distribution
-// ray tracing alike).
+// every sample, however the coin then sends the path on (path tracing, distribution ray
+// tracing and the classic ray tracer alike).
 TEST(AlphaCoverage, CameraPathsShadeTheCoveredShareInEverySample) {
     const float alpha = 0.4f, albedo = 0.8f, emission = 2, intensity = 5;
     for (const bool emissive : {true, false}) {
@@ -148,7 +149,7 @@ TEST(AlphaCoverage, CameraPathsShadeTheCoveredShareInEverySample) {
         const float expected = emissive ? alpha * emission
                                         : alpha * albedo / kPi * intensity *
                                               (to_light.z / std::sqrt(d2)) / d2;
-        for (const char* integrator : {"path", "direct"})
+        for (const char* integrator : {"path", "direct", "basic"})
             for (const float v : samples(s, ray, 64, {}, integrator))
                 ASSERT_NEAR(v, expected, 1e-5f) << integrator << (emissive ? ", emissive" : ", lit");
     }
