@@ -85,6 +85,21 @@ std::vector<float> samples(const BlendScene& s, const Ray& ray, int n, Integrato
     return v;
 }
 
+// n independent samples of one ray, each from its own pixel of an independent sampler.
+test::Estimate estimate_ray(const BlendScene& s, const std::string& integrator_name,
+                            const IntegratorOptions& o, Vec3 origin, Vec3 dir, uint64_t seed) {
+    const auto integrator = make_integrator(integrator_name, o);
+    auto sampler = make_sampler(SamplerType::Independent, 1, seed);
+    const RenderContext ctx = s.context();
+    return test::estimate(40000, [&](uint64_t i) {
+        sampler->start_pixel_sample({int(i), 0}, 0);
+        Ray r;
+        r.o = origin;
+        r.d = dir;
+        return integrator->Li(r, ctx, *sampler).y;
+    });
+}
+
 // A Lambertian floor lit by a point light 2 above it, through sheets at heights 1 and
 // 1.5 of the given coverages; the camera ray starts between the floor and the sheets.
 TEST(AlphaCoverage, ShadowRaysCarryTheProductOfTransparencies) {
@@ -186,16 +201,7 @@ TEST(AlphaCoverage, EmittersLightByTheirCoverage) {
             IntegratorOptions o;
             o.strategy = c.strategy;
             o.max_depth = 1;
-            const auto integrator = make_integrator(c.integrator, o);
-            auto sampler = make_sampler(SamplerType::Independent, 1, 7);
-            const RenderContext ctx = s.context();
-            const test::Estimate e = test::estimate(40000, [&](uint64_t i) {
-                sampler->start_pixel_sample({int(i), 0}, 0);
-                Ray r;
-                r.o = {0, 0.25f, 0};
-                r.d = {0, -1, 0};
-                return integrator->Li(r, ctx, *sampler).y;
-            });
+            const test::Estimate e = estimate_ray(s, c.integrator, o, {0, 0.25f, 0}, {0, -1, 0}, 7);
             EXPECT_TRUE(test::within(e, expected))
                 << (sheet ? "behind a sheet, " : "covered, ") << c.integrator << " "
                 << int(c.strategy) << ": " << e.mean << " +- " << e.std_error << ", expected "
@@ -223,16 +229,7 @@ TEST(AlphaCoverage, PartlyCoveredWhiteSphereMatchesTheFurnace) {
         IntegratorOptions o;
         o.max_depth = 256;
         o.strategy = strategy;
-        const auto integrator = make_integrator("path", o);
-        auto sampler = make_sampler(SamplerType::Independent, 1, 11);
-        const RenderContext ctx = s.context();
-        const test::Estimate e = test::estimate(40000, [&](uint64_t i) {
-            sampler->start_pixel_sample({int(i), 0}, 0);
-            Ray r;
-            r.o = {0.05f, 0.1f, 5};
-            r.d = {0, 0, -1};
-            return integrator->Li(r, ctx, *sampler).y;
-        });
+        const test::Estimate e = estimate_ray(s, "path", o, {0.05f, 0.1f, 5}, {0, 0, -1}, 11);
         EXPECT_TRUE(test::within(e, 1.0)) << int(strategy) << ": " << e.mean << " +- " << e.std_error;
         // Power: light sampling's share counted whole instead of by its coverage gave
         // 1.13 under MIS and 1.74 with light sampling alone (measured at coverage 0.5),
