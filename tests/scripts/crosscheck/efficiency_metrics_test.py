@@ -24,6 +24,7 @@ from efficiency_metrics import (EPSILON, average, efficiency, median, read_rgb, 
 from efficiency_render import (Cache, CyclesSession, cycles_path_tracing_seconds,  # noqa: E402
                                interleave, status_seconds)
 from efficiency_scenes import ALL, QUICK, SCENES, prepare  # noqa: E402
+from error_regions import block_table, pixel_relmse  # noqa: E402
 
 PIXELS = 3 * 4096
 
@@ -281,3 +282,33 @@ class HallScene(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class ErrorRegionsTest(unittest.TestCase):
+    """scripts/crosscheck/error_regions.py's per-pixel relMSE and block table."""
+
+    def test_pixel_relmse_is_the_mean_over_images_and_channels(self):
+        ref = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0]  # two pixels
+        a = [1.1, 1.0, 1.0, 0.1, 0.1, 0.1]
+        b = [1.0, 1.0, 0.7, 0.0, 0.0, 0.0]
+        got = pixel_relmse([a, b], ref, eps=0.01)
+        want0 = (0.01 / 1.01 / 3 + 0.09 / 1.01 / 3) / 2
+        want1 = (3 * 0.01 / 0.01 / 3 + 0) / 2
+        self.assertAlmostEqual(got[0], want0, places=12)
+        self.assertAlmostEqual(got[1], want1, places=12)
+
+    def test_block_table_ratios_and_shares(self):
+        # 3 x 2 pixels in blocks of 2: a left block of 2 x 2 and a right one of 1 x 2.
+        a = [1.0, 2.0, 4.0,
+             3.0, 0.0, 0.0]
+        b = [1.0, 1.0, 0.0,
+             1.0, 1.0, 0.0]
+        table = block_table(a, b, 3, 2, 2)
+        self.assertEqual(len(table), 1)
+        (ratio_l, share_a_l, share_b_l), (ratio_r, share_a_r, share_b_r) = table[0]
+        self.assertAlmostEqual(ratio_l, 6.0 / 4.0)
+        self.assertIsNone(ratio_r)  # Cycles' block is 0
+        self.assertAlmostEqual(share_a_l, 0.6)
+        self.assertAlmostEqual(share_a_r, 0.4)
+        self.assertAlmostEqual(share_b_l, 1.0)
+        self.assertAlmostEqual(share_b_r, 0.0)
