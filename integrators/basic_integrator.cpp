@@ -44,7 +44,8 @@ Spectrum BasicIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
             const Spectrum f = bsdf->eval(wo, wi, Transport::Radiance) *
                                bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, ls->wi);
             if (is_black(f)) continue;
-            const float transparency = shadow_transmittance(ctx, spawn_ray(sp, ls->wi, ls->dist, ray.time));
+            const float transparency =
+                shadow_transmittance(ctx, spawn_ray(sp, ls->wi, ls->dist, ray.time));
             if (!(transparency > 0)) continue;
             L += shaded * f * ls->Li * (transparency * std::abs(wi.z) / ls->pdf);
         }

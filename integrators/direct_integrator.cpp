@@ -50,7 +50,7 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
 
         const SideMedia sides = side_media(ctx, media.stack, sp.material, sd.front_face);
         L += shaded * sample_light_stratified(ctx, sp, sd, wo, ray.time, sampler,
-                                            m_options.light_samples, strategy, nb, sides);
+                                              m_options.light_samples, strategy, nb, sides);
 
         // BSDF samples: emission they find, MIS-weighted against the light samples. They
         // estimate the non-specular lobes only; specular lobes are followed below.
@@ -77,7 +77,7 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
                     float env_pdf;
                     const Spectrum Le = env->Le(wi_world, &env_pdf);
                     found += Le * (clear * emission_weight_for_pdf(ctx, env, sp.p, sd.ng, env_pdf,
-                                                                  bs->pdf, strategy, nl, nb));
+                                                                   bs->pdf, strategy, nl, nb));
                     break;
                 }
                 const SurfacePoint lp = make_surface_point(ctx.scene, r, *h);

@@ -66,9 +66,10 @@ TEST(AlphaCoverage, FollowsTheAlphaModes) {
 
 // A horizontal square of half side 20 at height y, facing up.
 void add_plane(Scene& s, float y, int material) {
-    test::add_instance(s, test::add_quad_object(s, {-20, y, 20}, {20, y, 20}, {20, y, -20},
-                                                {-20, y, -20}, material),
-                       Transform());
+    test::add_instance(
+        s,
+        test::add_quad_object(s, {-20, y, 20}, {20, y, 20}, {20, y, -20}, {-20, y, -20}, material),
+        Transform());
 }
 
 // n path samples along `ray`, each from its own sample index.
@@ -132,8 +133,8 @@ TEST(AlphaCoverage, ShadowRaysCarryTheProductOfTransparencies) {
             for (const char* integrator : {"path", "direct", "basic"})
                 for (const float v : samples(s, ray, 64, o, integrator))
                     ASSERT_NEAR(v, expected, 1e-5f * intensity)
-                        << integrator << ", alphas " << c.a1 << " (mode " << int(c.mode1)
-                        << "), " << c.a2 << " at " << p.x << ", " << p.z;
+                        << integrator << ", alphas " << c.a1 << " (mode " << int(c.mode1) << "), "
+                        << c.a2 << " at " << p.x << ", " << p.z;
         }
     }
 }
@@ -148,10 +149,10 @@ TEST(AlphaCoverage, CameraPathsShadeTheCoveredShareInEverySample) {
         BlendScene s;
         const int m = add_blend(s.scene, Spectrum(emissive ? 0.0f : albedo), alpha);
         if (emissive) s.scene.materials[m].emissive = Spectrum(emission);
-        test::add_instance(s.scene,
-                           test::add_quad_object(s.scene, {-5, -5, 0}, {5, -5, 0}, {5, 5, 0},
-                                                 {-5, 5, 0}, m),
-                           Transform());
+        test::add_instance(
+            s.scene,
+            test::add_quad_object(s.scene, {-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}, m),
+            Transform());
         if (!emissive)
             s.scene.lights.push_back(
                 std::make_unique<PointLight>(Vec3{0, 0, 2}, Spectrum(intensity)));
@@ -161,12 +162,13 @@ TEST(AlphaCoverage, CameraPathsShadeTheCoveredShareInEverySample) {
         ray.d = {0, 0, -1};
         const Vec3 p{0.1f, -0.2f, 0}, to_light = Vec3{0, 0, 2} - p;
         const float d2 = dot(to_light, to_light);
-        const float expected = emissive ? alpha * emission
-                                        : alpha * albedo / kPi * intensity *
-                                              (to_light.z / std::sqrt(d2)) / d2;
+        const float expected =
+            emissive ? alpha * emission
+                     : alpha * albedo / kPi * intensity * (to_light.z / std::sqrt(d2)) / d2;
         for (const char* integrator : {"path", "direct", "basic"})
             for (const float v : samples(s, ray, 64, {}, integrator))
-                ASSERT_NEAR(v, expected, 1e-5f) << integrator << (emissive ? ", emissive" : ", lit");
+                ASSERT_NEAR(v, expected, 1e-5f)
+                    << integrator << (emissive ? ", emissive" : ", lit");
     }
 }
 
@@ -195,9 +197,10 @@ TEST(AlphaCoverage, EmittersLightByTheirCoverage) {
             const char* integrator;
             LightStrategy strategy;
         };
-        for (const Config c :
-             {Config{"path", LightStrategy::Mis}, {"path", LightStrategy::LightOnly},
-              {"path", LightStrategy::BsdfOnly}, {"direct", LightStrategy::Mis}}) {
+        for (const Config c : {Config{"path", LightStrategy::Mis},
+                               {"path", LightStrategy::LightOnly},
+                               {"path", LightStrategy::BsdfOnly},
+                               {"direct", LightStrategy::Mis}}) {
             IntegratorOptions o;
             o.strategy = c.strategy;
             o.max_depth = 1;
@@ -221,16 +224,18 @@ TEST(AlphaCoverage, EmittersLightByTheirCoverage) {
 // not tell a coin the wrong way round.
 TEST(AlphaCoverage, PartlyCoveredWhiteSphereMatchesTheFurnace) {
     BlendScene s;
-    test::add_instance(s.scene, test::add_sphere_object(s.scene, add_blend(s.scene, Spectrum(1), 0.3f)),
+    test::add_instance(s.scene,
+                       test::add_sphere_object(s.scene, add_blend(s.scene, Spectrum(1), 0.3f)),
                        Transform());
     finish(s, std::make_unique<EnvironmentLight>(Spectrum(1), 10.0f));
-    for (LightStrategy strategy : {LightStrategy::Mis, LightStrategy::LightOnly,
-                                   LightStrategy::BsdfOnly}) {
+    for (LightStrategy strategy :
+         {LightStrategy::Mis, LightStrategy::LightOnly, LightStrategy::BsdfOnly}) {
         IntegratorOptions o;
         o.max_depth = 256;
         o.strategy = strategy;
         const test::Estimate e = estimate_ray(s, "path", o, {0.05f, 0.1f, 5}, {0, 0, -1}, 11);
-        EXPECT_TRUE(test::within(e, 1.0)) << int(strategy) << ": " << e.mean << " +- " << e.std_error;
+        EXPECT_TRUE(test::within(e, 1.0))
+            << int(strategy) << ": " << e.mean << " +- " << e.std_error;
         // Power: light sampling's share counted whole instead of by its coverage gave
         // 1.13 under MIS and 1.74 with light sampling alone (measured at coverage 0.5),
         // dozens of standard errors. Light sampling alone is the noisy one: shadow rays
