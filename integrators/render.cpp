@@ -88,7 +88,7 @@ bool render_samples(const RenderContext& ctx, const Camera& camera,
         auto camera_ray = [&](int x, int y, uint32_t s, Sampler& sampler, FilterSample& fs) {
             sampler.start_pixel_sample({x, y}, halves ? s >> 1 : s);
             // Filter importance sampling: the offset follows the filter, so the sample
-            // only contributes to this pixel, with weight f/pdf.
+            // only contributes to this pixel (with weight 1: Filter::sample).
             fs = filter->sample(sampler.get_pixel_2d());
             CameraSample cs;
             cs.film = {x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};

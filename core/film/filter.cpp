@@ -8,34 +8,42 @@
 namespace penumbra {
 
 namespace {
-constexpr int kBins = 256;
-}
+// Cells of the midpoint rule behind the CDF: its error is far below a float's rounding.
+constexpr int kCdfCells = 1 << 15;
+}  // namespace
 
 Filter::Filter(std::string name, float radius) : m_name(std::move(name)), m_radius(radius) {}
 
 void Filter::tabulate() {
-    // Midpoint values: the samples follow |f| closely and f/pdf is nearly constant
-    // (exactly constant for the box).
-    std::vector<float> f(kBins);
-    const float dx = 2 * m_radius / kBins;
-    for (int i = 0; i < kBins; ++i) f[i] = std::abs(eval_1d(-m_radius + (i + 0.5f) * dx));
-    m_distribution = Distribution1D(f);
+    // The CDF at the cells' ends, in double, from the filter at their midpoints (clamped
+    // at 0: the Blackman-Harris window's sum of cosines rounds to -1e-8 at its ends).
+    const double r = m_radius, dx = 2 * r / kCdfCells;
+    std::vector<double> cdf(kCdfCells + 1, 0.0);
+    for (int i = 0; i < kCdfCells; ++i)
+        cdf[i + 1] = cdf[i] + std::max(0.0f, eval_1d(float(-r + (i + 0.5) * dx))) * dx;
+    const double total = cdf[kCdfCells];
+    // Node k: where the CDF reaches k / kInverseSteps of the total, linear inside the cell
+    // that holds it (the midpoint rule's own density is constant there). The targets
+    // rise with k, so one walk over the cells serves all nodes.
+    m_inverse_cdf.resize(kInverseSteps + 1);
+    int j = 0;
+    for (int k = 0; k <= kInverseSteps; ++k) {
+        const double target = total * k / kInverseSteps;
+        while (j + 1 < kCdfCells && cdf[j + 1] < target) ++j;
+        const double mass = cdf[j + 1] - cdf[j];
+        const double into = mass > 0 ? std::clamp((target - cdf[j]) / mass, 0.0, 1.0) : 0.0;
+        m_inverse_cdf[k] = float(-r + (j + into) * dx);
+    }
 }
 
-float Filter::sample_1d(float u, float* pdf) const {
-    // Distribution1D's density is over [0, 1); the filter's support is 2 * radius wide.
-    const float x = m_distribution.sample_continuous(u, pdf);
-    *pdf /= 2 * m_radius;
-    return (2 * x - 1) * m_radius;
+float Filter::sample_1d(float u) const {
+    const float s = u * kInverseSteps;
+    const int k = std::clamp(static_cast<int>(s), 0, kInverseSteps - 1);
+    const float a = m_inverse_cdf[k], b = m_inverse_cdf[k + 1];
+    return a + (b - a) * std::clamp(s - k, 0.0f, 1.0f);
 }
 
-FilterSample Filter::sample(Vec2 u) const {
-    float px, py;
-    const float x = sample_1d(u.x, &px), y = sample_1d(u.y, &py);
-    const float pdf = px * py;
-    const float f = eval({x, y});
-    return {{x, y}, pdf > 0 ? f / pdf : 0.0f};
-}
+FilterSample Filter::sample(Vec2 u) const { return {{sample_1d(u.x), sample_1d(u.y)}, 1.0f}; }
 
 BoxFilter::BoxFilter() : Filter("box", 0.5f) { tabulate(); }
 

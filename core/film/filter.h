@@ -1,47 +1,55 @@
-// Pixel reconstruction filters, used by filter importance sampling (as pbrt-v4 does):
-// each camera sample's film offset is drawn from the filter itself and carries the
-// weight f/pdf, so a sample only ever touches its own pixel. That keeps rendering
-// deterministic across threads with no shared splatting.
+// Pixel reconstruction filters, used by filter importance sampling: each camera sample's
+// film offset is drawn from the filter itself, so a sample only ever touches its own
+// pixel. That keeps rendering deterministic across threads with no shared splatting.
 #pragma once
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/math/vec.h"
-#include "core/sampling/distribution.h"
 
 namespace penumbra {
 
 struct FilterSample {
     Vec2 offset;   // from the pixel center, in pixels
-    float weight;  // f(offset) / pdf(offset)
+    float weight;  // 1: the offsets' density is the filter (Filter::sample)
 };
 
 class Filter {
 public:
-    // Separable filter f(x) f(y) with support [-radius, radius]^2.
+    // Separable filter f(x) f(y) >= 0 with support [-radius, radius]^2.
     Filter(std::string name, float radius);
     virtual ~Filter() = default;
     virtual float eval_1d(float x) const = 0;
     float eval(Vec2 p) const { return eval_1d(p.x) * eval_1d(p.y); }
-    // u in [0,1)^2, e.g. a stratified pixel sample. By the tabulated distribution unless
-    // a filter has a closed form.
+    // u in [0,1)^2, e.g. a stratified pixel sample. Each axis goes through the filter's
+    // tabulated inverse CDF (unless a filter has a closed form), so the offsets' density
+    // is the normalized filter, up to the table's steps, and every weight is 1 (as
+    // Cycles' filter table). Weighting by f/pdf instead, as pbrt-v4 does, evaluated the
+    // filter (an exp per axis) and searched a CDF per camera sample, 4-6% of a render
+    // (docs/performance.md), for a filter that differs from this one by less than the
+    // table's last step.
     virtual FilterSample sample(Vec2 u) const;
+    // The offset along one axis for u in [0, 1): nondecreasing in u.
+    float sample_1d(float u) const;
     float radius() const { return m_radius; }
     const std::string& name() const { return m_name; }
 
+    // Equal-probability steps of the inverse CDF: the offsets' density is constant
+    // between two nodes, each span holding 1 / kInverseSteps of the filter's mass.
+    static constexpr int kInverseSteps = 16384;
+
 protected:
-    // Tabulates |f| for sampling; derived constructors call it once eval_1d is usable.
+    // Tabulates the inverse CDF; derived constructors call it once eval_1d is usable.
     void tabulate();
 
 private:
-    float sample_1d(float u, float* pdf) const;
     std::string m_name;
     float m_radius;
-    // |f| at the midpoints of kBins bins over [-radius, radius], sampled by inversion
-    // with Distribution1D's guide table: one lookup and a short walk per camera sample,
-    // where a binary search over the CDF was 6.5% of a default-filter render of glossy.
-    Distribution1D m_distribution;
+    // kInverseSteps + 1 offsets: node k is where the filter's CDF reaches k / kInverseSteps,
+    // so a sample is one multiply, two loads and one interpolation per axis.
+    std::vector<float> m_inverse_cdf;
 };
 
 // Box of width 1 (radius 0.5): every sample has weight 1.
