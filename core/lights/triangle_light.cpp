@@ -134,7 +134,7 @@ std::optional<LightSample> TriangleLight::sample_Li(const ShadingPoint& ref, Vec
     Placed scratch;
     const Placed& t = placed(time, &scratch);
     if (!(t.area > 0)) return std::nullopt;
-    float b0, b1, b2, pdf;
+    float b0, b1, b2, pdf = 0;  // 0: GCC cannot see both branches set it
     Vec3 p;
     const float omega = spherical_solid_angle(ref.p, t);
     if (omega > 0) {

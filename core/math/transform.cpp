@@ -166,14 +166,6 @@ Transform Transform::look_at(Vec3 eye, Vec3 target, Vec3 up) {
     return Transform(m);
 }
 
-Vec3 Transform::general_point(Vec3 p) const {
-    const auto& m = m_m.m;
-    Vec3 r;
-    for (int i = 0; i < 3; ++i) r[i] = m[i][0] * p.x + m[i][1] * p.y + m[i][2] * p.z + m[i][3];
-    const float w = m[3][0] * p.x + m[3][1] * p.y + m[3][2] * p.z + m[3][3];
-    return w == 1.0f ? r : r / w;
-}
-
 Bounds3 Transform::bounds(const Bounds3& b) const {
     Bounds3 r;
     if (b.empty()) return r;
