@@ -26,8 +26,14 @@ namespace penumbra {
 struct RenderContext {
     RenderContext(const Scene& scene, const Accel& accel, const LightSet& lights,
                   bool has_alpha = false, const MaterialOptions& materials = {})
-        : scene(scene), accel(accel), lights(lights), has_alpha(has_alpha),
-          materials(materials), media(scene), has_volumes(media.any()),
+        : scene(scene),
+          accel(accel),
+          lights(lights),
+          has_alpha(has_alpha),
+          materials(materials),
+          ray_cones(!scene.textures.empty()),
+          media(scene),
+          has_volumes(media.any()),
           prototypes(std::make_shared<const BsdfPrototypes>(scene, materials)) {
         this->materials.prototypes = prototypes.get();
     }
@@ -39,6 +45,9 @@ struct RenderContext {
     // How glTF materials become BSDFs (--microfacet). A caller that changes the
     // distribution or layering afterwards gets no prototypes (BsdfPrototypes::find).
     MaterialOptions materials{};
+    // Ray cones only choose texture levels: without textures camera rays carry none, and
+    // no hit or bounce pays for a footprint (two square roots and a division a vertex).
+    bool ray_cones = true;
     MediumSet media;  // the interior of each material with a volume
     // Some material has a volume (and so possibly dispersion): without one, the path
     // tracer skips its media bookkeeping for the whole render.
@@ -52,11 +61,11 @@ struct RenderContext {
 enum class LightStrategy { Mis, BsdfOnly, LightOnly };
 
 struct IntegratorOptions {
-    int max_depth = 8;         // path: bounces; basic/direct: specular recursion
-    int rr_depth = 3;          // path: Russian roulette from this depth on
+    int max_depth = 8;  // path: bounces; basic/direct: specular recursion
+    int rr_depth = 3;   // path: Russian roulette from this depth on
     LightStrategy strategy = LightStrategy::Mis;
-    int light_samples = 1;     // direct: shadow rays per shading point
-    int bsdf_samples = 1;      // direct: BSDF samples per shading point
+    int light_samples = 1;  // direct: shadow rays per shading point
+    int bsdf_samples = 1;   // direct: BSDF samples per shading point
     // path, firefly control (off at 0; biased when on). Each contribution's largest
     // component is clamped to these, as Cycles' sample_clamp_direct / _indirect: direct
     // light has at most one bounce between camera and emitter, indirect more.

@@ -24,10 +24,9 @@ bool abandon(const RenderOptions& o) {
 
 }  // namespace
 
-bool render_samples(const RenderContext& ctx, const Camera& camera,
-                    const Integrator& integrator, const RenderOptions& options, Film& film,
-                    uint32_t first, uint32_t last, ProgressReporter* progress,
-                    const std::vector<uint8_t>* active) {
+bool render_samples(const RenderContext& ctx, const Camera& camera, const Integrator& integrator,
+                    const RenderOptions& options, Film& film, uint32_t first, uint32_t last,
+                    ProgressReporter* progress, const std::vector<uint8_t>* active) {
     const int w = camera.width(), h = camera.height();
     CHECK(film.width() == w && film.height() == h);
     CHECK(!active || active->size() == size_t(w) * h);
@@ -46,8 +45,8 @@ bool render_samples(const RenderContext& ctx, const Camera& camera,
                               hash_values(options.seed, 0x68616c76657331ull))
                : nullptr};
 
-    const int threads = options.threads > 0 ? options.threads
-                                            : tbb::this_task_arena::max_concurrency();
+    const int threads =
+        options.threads > 0 ? options.threads : tbb::this_task_arena::max_concurrency();
     // Work items: tiles, split further (down to 4x4) until there are at least 32 per
     // thread, so a small image or a pass of few samples (the first passes render 1, 1,
     // 2 spp) still keeps every thread busy to the end of the pass; TBB steals the
@@ -94,7 +93,9 @@ bool render_samples(const RenderContext& ctx, const Camera& camera,
             cs.film = {x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
             cs.lens = sampler.get_2d();
             cs.time = sampler.get_1d();
-            return camera.generate_ray(cs);
+            Ray ray = camera.generate_ray(cs);
+            if (!ctx.ray_cones) ray.cone = RayCone{};
+            return ray;
         };
         auto add = [&](int x, int y, uint32_t s, const Ray& ray, const Spectrum& L,
                        const FilterSample& fs) {
@@ -203,8 +204,7 @@ struct CheckpointClock {
     const RenderOptions& options;
     double last = 0;
     void after_pass(const Film& film, uint32_t spp, double now) {
-        if (options.checkpoint && spp < options.spp &&
-            now - last >= options.checkpoint_interval) {
+        if (options.checkpoint && spp < options.spp && now - last >= options.checkpoint_interval) {
             options.checkpoint(film, spp);
             last = now;
         }
@@ -215,16 +215,15 @@ struct CheckpointClock {
 // still active after each; every pass is even and starts at an even index. A resumed
 // film (s.spp > 0) was checkpointed between two such passes, and the active pixels are
 // a function of the film, so the continuation takes the same passes.
-void render_adaptive(const RenderContext& ctx, const Camera& camera,
-                     const Integrator& integrator, const RenderOptions& options, Film& film,
-                     ProgressReporter& progress, RenderStats& s, uint64_t rays_before,
-                     const std::function<double()>& elapsed) {
+void render_adaptive(const RenderContext& ctx, const Camera& camera, const Integrator& integrator,
+                     const RenderOptions& options, Film& film, ProgressReporter& progress,
+                     RenderStats& s, uint64_t rays_before, const std::function<double()>& elapsed) {
     const size_t pixels = size_t(film.width()) * film.height();
     std::vector<uint8_t> active(pixels, 1);
     size_t n_active = pixels;
-    const uint32_t min_spp = std::min(
-        options.spp, options.min_spp ? (options.min_spp + 1) & ~1u
-                                     : adaptive_min_spp(options.target_error));
+    const uint32_t min_spp =
+        std::min(options.spp, options.min_spp ? (options.min_spp + 1) & ~1u
+                                              : adaptive_min_spp(options.target_error));
     if (s.spp >= min_spp) n_active = update_active_pixels(film, options.target_error, active);
     CheckpointClock clock{options};
     while (n_active > 0 && s.spp < options.spp) {
@@ -236,11 +235,10 @@ void render_adaptive(const RenderContext& ctx, const Camera& camera,
         }
         if (options.time_limit > 0 && s.camera_samples > 0) {
             const double per_sample = elapsed() / double(s.camera_samples);
-            if (elapsed() + per_sample * double(n) * double(n_active) > options.time_limit)
-                break;
+            if (elapsed() + per_sample * double(n) * double(n_active) > options.time_limit) break;
         }
-        if (!render_samples(ctx, camera, integrator, options, film, s.spp, s.spp + n,
-                            &progress, &active)) {
+        if (!render_samples(ctx, camera, integrator, options, film, s.spp, s.spp + n, &progress,
+                            &active)) {
             s.interrupted = s.aborted = true;
             break;
         }
@@ -259,8 +257,7 @@ void render_passes(const RenderContext& ctx, const Camera& camera, const Integra
                    const RenderOptions& options, Film& film, ProgressReporter& progress,
                    RenderStats& s, uint64_t rays_before, const std::function<double()>& elapsed) {
     if (options.target_error > 0) {
-        render_adaptive(ctx, camera, integrator, options, film, progress, s, rays_before,
-                        elapsed);
+        render_adaptive(ctx, camera, integrator, options, film, progress, s, rays_before, elapsed);
         return;
     }
     // Passes are planned from this run's own pace: a resumed render starts with short
@@ -275,8 +272,7 @@ void render_passes(const RenderContext& ctx, const Camera& camera, const Integra
             s.interrupted = true;
             break;
         }
-        if (!render_samples(ctx, camera, integrator, options, film, s.spp, s.spp + n,
-                            &progress)) {
+        if (!render_samples(ctx, camera, integrator, options, film, s.spp, s.spp + n, &progress)) {
             s.interrupted = s.aborted = true;
             break;
         }
@@ -317,8 +313,9 @@ Film render(const RenderContext& ctx, const Camera& camera, const Integrator& in
     // One arena for every pass (render_samples runs in it when the size matches).
     tbb::task_arena arena(options.threads > 0 ? options.threads
                                               : tbb::this_task_arena::max_concurrency());
-    arena.execute([&] { render_passes(ctx, camera, integrator, options, film, progress, s,
-                                      rays_before, elapsed); });
+    arena.execute([&] {
+        render_passes(ctx, camera, integrator, options, film, progress, s, rays_before, elapsed);
+    });
     if (options.interrupts && options.interrupts->load() >= 1 && s.spp < options.spp)
         s.interrupted = true;
     progress.done();

@@ -6,7 +6,10 @@
 
 #include <cstring>
 
+#include "core/accel/embree_accel.h"
 #include "core/camera/camera.h"
+#include "core/camera/perspective_camera.h"
+#include "integrators/render.h"
 #include "support/render_scene.h"
 #include "support/scene_builder.h"
 
@@ -76,6 +79,31 @@ TEST(TextureFootprint, DistantCheckerboardConvergesWithLessVariance) {
     ASSERT_EQ(again.pixels.size(), a.pixels.size());
     EXPECT_EQ(std::memcmp(again.pixels.data(), a.pixels.data(), a.pixels.size() * sizeof(float)),
               0);
+}
+
+// Ray cones only choose texture levels (RenderContext::ray_cones): a scene without
+// textures traces none, and its image is bitwise the one that cones would give.
+TEST(TextureFootprint, ScenesWithoutTexturesTraceNoCones) {
+    const Scene textured = checker_scene(MipFilter::Linear);
+    const Scene plain = test::make_lit_sphere_on_floor();
+    ASSERT_TRUE(plain.textures.empty());
+    const EmbreeAccel accel(plain);
+    const LightSet lights(plain, nullptr);
+    const RenderContext without{plain, accel, lights};
+    EXPECT_FALSE(without.ray_cones);
+    EXPECT_TRUE((RenderContext{textured, accel, lights}.ray_cones));
+    RenderContext with = without;
+    with.ray_cones = true;
+    const PerspectiveCamera camera(Transform::look_at({0, 0.5f, 4}, {0, 0, 0}, {0, 1, 0}), 0.8f, 24,
+                                   16);
+    const auto integrator = make_integrator("path", IntegratorOptions{});
+    RenderOptions opt;
+    opt.spp = 8;
+    opt.progress = false;
+    const Image a = render(without, camera, *integrator, opt).resolve();
+    const Image b = render(with, camera, *integrator, opt).resolve();
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    EXPECT_EQ(std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)), 0);
 }
 
 }  // namespace
