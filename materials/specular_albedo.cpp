@@ -11,30 +11,55 @@ namespace penumbra {
 
 namespace {
 
-// The largest i <= M - 2 with column mu(i) <= mu, for mu in [0, 1], without a cube
-// root call (9% of the profile): a bit-level first guess of cbrt(mu) (Kahan's
-// exponent division), one Newton step (relative error below 2e-3, under 0.2 columns),
-// and then exact comparisons with the columns, so the result is what floor() of the
-// exact cube root would give.
-int column_below(float mu) {
-    constexpr int M = SpecularAlbedoTable::M;
-    if (!(mu > 0)) return 0;
-    uint32_t bits;
-    std::memcpy(&bits, &mu, 4);
-    bits = bits / 3 + 709921077u;
-    float c;
-    std::memcpy(&c, &bits, 4);
-    c = c - (c * c * c - mu) / (3 * c * c);
-    int i = std::clamp(static_cast<int>(c * (M - 1)), 0, M - 2);
-    while (i > 0 && specular_albedo_column_mu(i) > mu) --i;
-    while (i < M - 2 && specular_albedo_column_mu(i + 1) <= mu) ++i;
-    return i;
+constexpr int kColumns = SpecularAlbedoTable::M;
+
+// The columns' mu, as specular_albedo_column_mu gives them (evaluated by the compiler
+// with the same float operations): a load where the function divides.
+struct ColumnMu {
+    float mu[kColumns];
+};
+constexpr ColumnMu make_column_mu() {
+    ColumnMu c{};
+    for (int i = 0; i < kColumns; ++i) c.mu[i] = specular_albedo_column_mu(i);
+    return c;
 }
+constexpr ColumnMu kColumnMu = make_column_mu();
+
+// Guide table over mu: entry k is the largest column i <= M - 2 with mu(i) <= k / kGuide,
+// so for mu in [k / kGuide, (k + 1) / kGuide) the column below mu is at or after it:
+// 6 columns after in the first entry, where the columns crowd towards mu = 0, 2 in the
+// third, and at most 1 in every other.
+constexpr int kGuide = 1024;
+struct ColumnGuide {
+    unsigned char first[kGuide];
+};
+constexpr ColumnGuide make_column_guide() {
+    ColumnGuide g{};
+    int i = 0;
+    for (int k = 0; k < kGuide; ++k) {
+        const float mu = float(k) / kGuide;  // exact: kGuide is a power of two
+        while (i < kColumns - 2 && kColumnMu.mu[i + 1] <= mu) ++i;
+        g.first[k] = static_cast<unsigned char>(i);
+    }
+    return g;
+}
+constexpr ColumnGuide kColumnGuide = make_column_guide();
 
 }  // namespace
 
+// From the guide table, then exact comparisons with the columns, so the result is what floor() of
+// the exact cube root would give. A cube root here was 9% of the profile, and the bit-level
+// guess with a Newton step that replaced it still cost a division.
+int specular_albedo_column_below(float mu) {
+    if (!(mu > 0)) return 0;
+    int i = kColumnGuide.first[std::min(static_cast<int>(mu * kGuide), kGuide - 1)];
+    while (i < kColumns - 2 && kColumnMu.mu[i + 1] <= mu) ++i;
+    return i;
+}
+
 SpecularAlbedo::SpecularAlbedo(MicrofacetType type, float alpha) {
-    const float t = std::sqrt(std::sqrt(std::clamp(alpha, 0.0f, 1.0f))) * (SpecularAlbedoTable::R - 1);
+    const float t =
+        std::sqrt(std::sqrt(std::clamp(alpha, 0.0f, 1.0f))) * (SpecularAlbedoTable::R - 1);
     m_row = std::min(static_cast<int>(t), SpecularAlbedoTable::R - 2);
     m_frac = t - m_row;
     // Integrated when penumbra was built (specular_albedo_generator.cpp): nothing to
@@ -50,10 +75,10 @@ SpecularAlbedo::SpecularAlbedo(MicrofacetType type, float alpha) {
 
 Vec2 SpecularAlbedo::at(float mu) const {
     mu = std::clamp(mu, 0.0f, 1.0f);
-    const int i = column_below(mu);
+    const int i = specular_albedo_column_below(mu);
     // Linear in mu between columns (not in cbrt(mu)): the averages above integrate
     // exactly this interpolant.
-    const float mu0 = specular_albedo_column_mu(i), mu1 = specular_albedo_column_mu(i + 1);
+    const float mu0 = kColumnMu.mu[i], mu1 = kColumnMu.mu[i + 1];
     const float t = std::clamp((mu - mu0) / (mu1 - mu0), 0.0f, 1.0f);
     const auto& r0 = m_table->ab[m_row];
     const auto& r1 = m_table->ab[m_row + 1];

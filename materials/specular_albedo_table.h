@@ -15,14 +15,18 @@ struct SpecularAlbedoTable {
 };
 
 // The grid's nodes: mu = (i / (M - 1))^3, alpha = (j / (R - 1))^4.
-inline float specular_albedo_column_mu(int i) {
+constexpr float specular_albedo_column_mu(int i) {
     const float s = i / float(SpecularAlbedoGrid::kColumns - 1);
     return s * s * s;
 }
-inline float specular_albedo_row_alpha(int j) {
+constexpr float specular_albedo_row_alpha(int j) {
     const float t = j / float(SpecularAlbedoGrid::kRows - 1);
     return (t * t) * (t * t);
 }
+
+// The largest column i <= M - 2 with mu(i) <= mu, for mu in [0, 1] (0 for mu <= 0): the
+// column at or below mu that SpecularAlbedo::at interpolates from.
+int specular_albedo_column_below(float mu);
 
 // Integrates row j of type's table (A and B at every column, and the row's average).
 void integrate_specular_albedo_row(MicrofacetType type, int j, SpecularAlbedoTable& t);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 #include "core/sampling/rng.h"
 #include "materials/specular_albedo_table.h"
@@ -55,6 +56,36 @@ TEST(SpecularAlbedo, CompiledTableIsTheIntegratedOne) {
                     ASSERT_EQ(compiled.ab[j][i][c], fresh->ab[j][i][c]) << j << " " << i;
             for (int c = 0; c < 2; ++c) ASSERT_EQ(compiled.average[j][c], fresh->average[j][c]);
         }
+    }
+}
+
+// The column lookup behind at() against a plain search: the largest column at or below
+// mu, on both sides of every column's node, at the guide table's bin edges, and at
+// random and tiny mu.
+TEST(SpecularAlbedo, ColumnBelowIsTheLastNodeAtOrBelowMu) {
+    constexpr int M = SpecularAlbedoTable::M;
+    auto expected = [](float mu) {
+        int i = 0;
+        while (i < M - 2 && specular_albedo_column_mu(i + 1) <= mu) ++i;
+        return i;
+    };
+    std::vector<float> mus = {0.0f, -1.0f, 1.0f, 1e-30f, 1e-7f, 0x1.fffffep-1f};
+    for (int i = 0; i < M; ++i) {
+        const float node = specular_albedo_column_mu(i);
+        mus.insert(mus.end(), {node, std::nextafter(node, 0.0f), std::nextafter(node, 2.0f)});
+    }
+    for (int k = 0; k <= 4096; ++k) {
+        const float edge = k / 4096.0f;
+        mus.insert(mus.end(), {edge, std::nextafter(edge, 0.0f), std::nextafter(edge, 2.0f)});
+    }
+    Rng rng(9);
+    for (int k = 0; k < 200000; ++k) {
+        const float u = rng.next_float();
+        mus.push_back(k % 2 ? u : u * u * u * u);  // half of them crowded towards 0
+    }
+    for (float mu : mus) {
+        const float clamped = std::clamp(mu, 0.0f, 1.0f);
+        ASSERT_EQ(specular_albedo_column_below(clamped), expected(clamped)) << mu;
     }
 }
 
