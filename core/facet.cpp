@@ -10,8 +10,10 @@ Facet make_facet(const TriangleMesh& mesh, const Transform& xf, uint32_t prim) {
     Facet f;
     if (world_face_normal(xf, face, &f.ng)) f.flags |= Facet::kNormal;
     if (!mesh.normals.empty() &&
-        is_flat_facet(mesh.normals[i0], mesh.normals[i1], mesh.normals[i2], face))
+        is_flat_facet(mesh.normals[i0], mesh.normals[i1], mesh.normals[i2], face)) {
         f.flags |= Facet::kFlat;
+        if (dot(mesh.normals[i0], face) < 0) f.flags |= Facet::kOpposed;
+    }
     return f;
 }
 

@@ -17,13 +17,16 @@ namespace penumbra {
 // 16 bytes per triangle and placement.
 struct Facet {
     Vec3 ng;             // world_face_normal's unit normal (valid when kNormal is set)
-    uint32_t flags = 0;  // kNormal | kFlat
+    uint32_t flags = 0;  // kNormal | kFlat | kOpposed
 
     // The triangle has a geometric normal (not degenerate): ng holds it. Without it the
     // hit takes the ray's reversed direction, which no table can hold.
     static constexpr uint32_t kNormal = 1;
     // The mesh has shading normals and they are flat over this triangle (is_flat_facet).
     static constexpr uint32_t kFlat = 2;
+    // Flat, with the vertex normal against the face normal (a winding the file's normals
+    // contradict): the shading normal is -ng.
+    static constexpr uint32_t kOpposed = 4;
 };
 static_assert(sizeof(Facet) == 16, "the table's cost per triangle is stated as 16 bytes");
 
@@ -41,7 +44,8 @@ inline bool world_face_normal(const Transform& xf, Vec3 face, Vec3* ng) {
 
 // A flat-shaded facet (three equal normals along the face normal, as glTF exporters write
 // hard edges) has every vertex plane through its own plane: Hanika's lift would only add
-// rounding noise, and the interpolation gives n0 back.
+// rounding noise, and the interpolation gives n0 back. Its shading normal is taken to be
+// the geometric one (on n0's side), which it is to within 1e-6 radians.
 inline bool is_flat_facet(Vec3 n0, Vec3 n1, Vec3 n2, Vec3 face) {
     const float norms2 = length_squared(n0) * length_squared(face);
     return n0 == n1 && n0 == n2 && std::isfinite(norms2) &&

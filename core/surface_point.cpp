@@ -26,8 +26,8 @@ Vec3 point_error(const Transform& xf, Vec3 q, Vec3 q_err) {
         return {e[0], e[1], e[2]};
     }
     for (int r = 0; r < 3; ++r) {
-        const float carried = std::abs(m(r, 0)) * q_err.x + std::abs(m(r, 1)) * q_err.y +
-                              std::abs(m(r, 2)) * q_err.z;
+        const float carried =
+            std::abs(m(r, 0)) * q_err.x + std::abs(m(r, 1)) * q_err.y + std::abs(m(r, 2)) * q_err.z;
         const float made = std::abs(m(r, 0) * q.x) + std::abs(m(r, 1) * q.y) +
                            std::abs(m(r, 2) * q.z) + std::abs(m(r, 3));
         e[r] = (gamma(3) + 1) * carried + gamma(3) * made;
@@ -100,7 +100,11 @@ SurfacePoint surface_point_on(const TriangleMesh& mesh, const Transform& xf, con
 
     Vec3 ns = ng;
     Vec3 p_smooth = p;
-    if (!mesh.normals.empty()) {
+    if (facet && has_ng && (facet->flags & Facet::kFlat)) {
+        // A flat facet's shading normal is ng on n0's side (is_flat_facet): no vertex
+        // normal to read, transform and normalize at each hit.
+        if (facet->flags & Facet::kOpposed) ns = -ng;
+    } else if (!mesh.normals.empty()) {
         const bool bends = !mesh.motion_normals.empty();
         auto normal = [&](uint32_t i) {
             return bends ? normal_at(mesh, i, ray.time) : mesh.normals[i];
@@ -119,16 +123,21 @@ SurfacePoint surface_point_on(const TriangleMesh& mesh, const Transform& xf, con
             n2 = normal(i2);
             flat = is_flat_facet(n0, n1, n2, face);
         }
-        Vec3 n = n0;
-        if (!flat) {
-            const Vec3 v[3] = {p0, p1, p2}, vn[3] = {n0, n1, n2};
-            const float b[3] = {b0, b1, b2};
-            p_smooth = xf.point(smooth_surface_point(q, v, vn, b));
-            n = n0 * b0 + n1 * b1 + n2 * b2;
+        if (flat && has_ng) {
+            // The facet table's rule above, for hits without the table.
+            if (dot(n0, face) < 0) ns = -ng;
+        } else {
+            Vec3 n = n0;
+            if (!flat) {
+                const Vec3 v[3] = {p0, p1, p2}, vn[3] = {n0, n1, n2};
+                const float b[3] = {b0, b1, b2};
+                p_smooth = xf.point(smooth_surface_point(q, v, vn, b));
+                n = n0 * b0 + n1 * b1 + n2 * b2;
+            }
+            const Vec3 nw = xf.normal(n);
+            const float len = length(nw);
+            if (len > 0 && std::isfinite(len)) ns = nw / len;
         }
-        const Vec3 nw = xf.normal(n);
-        const float len = length(nw);
-        if (len > 0 && std::isfinite(len)) ns = nw / len;
     }
     // The winding defines ng, but files are not always consistent with their normals:
     // trust the shading normals for which side is "outside".
@@ -161,12 +170,10 @@ SurfacePoint surface_point_on(const TriangleMesh& mesh, const Transform& xf, con
         cone_width = ray.cone.width_at(hit.t * dlen);
         set_uv_widths(mesh, xf, ray, ng, idx, e1, e2, cone_width, dlen, uv_width);
     }
-    return SurfacePoint{p,       p_smooth,   p_error,
-                        ng,      ng_is_front, ns,
-                        dpdu,    tangent,    uv0,
-                        uv1,     cone_width, {uv_width[0], uv_width[1]},
-                        color,   hit.t,      hit.instance,
-                        hit.mesh, hit.prim,  mesh.material};
+    return SurfacePoint{
+        p,     p_smooth, p_error,      ng,       ng_is_front, ns,
+        dpdu,  tangent,  uv0,          uv1,      cone_width,  {uv_width[0], uv_width[1]},
+        color, hit.t,    hit.instance, hit.mesh, hit.prim,    mesh.material};
 }
 
 }  // namespace

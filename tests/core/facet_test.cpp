@@ -1,6 +1,7 @@
 // Precomputed facets (core/facet.*): a hit that carries its triangle's facet gives the
 // surface point a hit without one gives, bit for bit, on flat, smooth, unshaded and
-// degenerate triangles under translations, rotations, non-uniform scales and mirrors.
+// degenerate triangles under translations, rotations, non-uniform scales and mirrors; a
+// flat facet's shading normal is its geometric normal, on the vertex normals' side.
 #include "core/facet.h"
 
 #include <gtest/gtest.h>
@@ -25,10 +26,10 @@ std::vector<Case> cases() {
     const std::vector<Vec3> tri = {{0, 0, 0}, {1, 0.3f, 0}, {0.2f, 0.1f, 1}};
     const Vec3 face = normalize(cross(tri[1] - tri[0], tri[2] - tri[0]));
     const Vec3 up(0, 1, 0);
-    constexpr uint32_t kN = Facet::kNormal, kF = Facet::kFlat;
+    constexpr uint32_t kN = Facet::kNormal, kF = Facet::kFlat, kO = Facet::kOpposed;
     return {
         {"flat", tri, {face, face, face}, kN | kF},
-        {"flat, normals against the winding", tri, {-face, -face, -face}, kN | kF},
+        {"flat, normals against the winding", tri, {-face, -face, -face}, kN | kF | kO},
         {"equal normals off the face normal", tri, {up, up, up}, kN},
         {"smooth", tri, {up, face, normalize(Vec3(0.2f, 1, 0.3f))}, kN},
         {"no normals", tri, {}, kN},
@@ -74,10 +75,17 @@ TEST(Facet, HitsWithTheirFacetGiveTheSurfacePointOfHitsWithout) {
                         const SurfacePoint computed = make_surface_point(scene, ray, hit);
                         hit.facet = &facet;
                         const SurfacePoint looked_up = make_surface_point(scene, ray, hit);
-                        test::expect_same_surface_point(
-                            looked_up, computed,
-                            c.name + ", " + xf_name + ", b " + std::to_string(b[0]) + " " +
-                                std::to_string(b[1]));
+                        test::expect_same_surface_point(looked_up, computed,
+                                                        c.name + ", " + xf_name + ", b " +
+                                                            std::to_string(b[0]) + " " +
+                                                            std::to_string(b[1]));
+                        if ((facet.flags & Facet::kFlat) && (facet.flags & Facet::kNormal)) {
+                            // A flat facet shades with its geometric normal, which is the
+                            // vertex normal's direction to within 1e-6 radians.
+                            EXPECT_EQ(computed.ns, computed.ng) << c.name << ", " << xf_name;
+                            const Vec3 n0 = normalize(xf.normal(c.normals[0]));
+                            EXPECT_GT(dot(computed.ns, n0), 1 - 1e-6f) << c.name << ", " << xf_name;
+                        }
                         ++compared;
                     }
         }
