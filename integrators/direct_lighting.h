@@ -28,6 +28,9 @@ inline float power_heuristic(float nf, float f_pdf, float ng, float g_pdf) {
 // mapped one, both on the viewer's side. Without a normal map n_b = n_s and this is
 // exactly 1. Transmitted light (wi below n_b) is left alone.
 inline float bump_shadowing(Vec3 n_smooth, Vec3 n_bump, Vec3 wi) {
+    // What the formula gives then (a division and three dot products at every light
+    // and BSDF sample of a surface without a normal map).
+    if (n_smooth == n_bump) return 1;
     const float nb_wi = dot(n_bump, wi), cos_d = dot(n_smooth, n_bump);
     if (!(nb_wi > 0) || !(cos_d > 0)) return 1;
     const float g = std::min(1.0f, std::max(0.0f, dot(n_smooth, wi)) / (nb_wi * cos_d));
