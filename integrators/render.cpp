@@ -30,7 +30,7 @@ bool render_samples(const RenderContext& ctx, const Camera& camera, const Integr
     const int w = camera.width(), h = camera.height();
     CHECK(film.width() == w && film.height() == h);
     CHECK(!active || active->size() == size_t(w) * h);
-    const std::unique_ptr<Filter> filter = make_filter(options.filter);
+    const Filter& filter = shared_filter(options.filter);
     // Built for the whole budget: stratified and Sobol index their strata by the sample
     // index within [0, spp), whatever the pass. With the error estimate, even and odd
     // sample indices are two independently seeded sample streams of half the budget
@@ -88,7 +88,7 @@ bool render_samples(const RenderContext& ctx, const Camera& camera, const Integr
             sampler.start_pixel_sample({x, y}, halves ? s >> 1 : s);
             // Filter importance sampling: the offset follows the filter, so the sample
             // only contributes to this pixel (with weight 1: Filter::sample).
-            fs = filter->sample(sampler.get_pixel_2d());
+            fs = filter.sample(sampler.get_pixel_2d());
             CameraSample cs;
             cs.film = {x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
             cs.lens = sampler.get_2d();

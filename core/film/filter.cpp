@@ -79,4 +79,21 @@ std::unique_ptr<Filter> make_filter(const std::string& name) {
                                 "' (expected box, gaussian or blackman-harris)");
 }
 
+const Filter& shared_filter(const std::string& name) {
+    if (name == "box") {
+        static const BoxFilter box;
+        return box;
+    }
+    if (name == "gaussian") {
+        static const GaussianFilter gaussian;
+        return gaussian;
+    }
+    if (name == "blackman-harris") {
+        static const BlackmanHarrisFilter blackman_harris;
+        return blackman_harris;
+    }
+    make_filter(name);  // throws its error for an unknown name
+    throw std::logic_error("make_filter accepted a filter shared_filter lacks: " + name);
+}
+
 }  // namespace penumbra

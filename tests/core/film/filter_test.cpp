@@ -149,7 +149,27 @@ TEST(Filter, BoxOffsetIsThePixelSampleMinusOneHalf) {
     }
 }
 
-TEST(Filter, UnknownNameThrows) { EXPECT_THROW(make_filter("mitchell"), std::invalid_argument); }
+TEST(Filter, UnknownNameThrows) {
+    EXPECT_THROW(make_filter("mitchell"), std::invalid_argument);
+    EXPECT_THROW(shared_filter("mitchell"), std::invalid_argument);
+}
+
+// Every pass of every render samples one shared filter per name: the same object each
+// time, drawing what a filter of its own would.
+TEST(Filter, SharedFiltersAreOnePerNameAndSampleAsTheirOwn) {
+    for (const char* name : kFilters) {
+        const Filter& shared = shared_filter(name);
+        EXPECT_EQ(&shared, &shared_filter(name)) << name;
+        EXPECT_EQ(shared.name(), name);
+        const auto own = make_filter(name);
+        for (float u : {0.0f, 0.1f, 0.5f, 0.77f, 0x1.fffffep-1f}) {
+            const FilterSample a = shared.sample({u, 1 - u}), b = own->sample({u, 1 - u});
+            EXPECT_EQ(a.offset.x, b.offset.x) << name << " " << u;
+            EXPECT_EQ(a.offset.y, b.offset.y) << name << " " << u;
+            EXPECT_EQ(a.weight, b.weight);
+        }
+    }
+}
 
 }  // namespace
 }  // namespace penumbra
