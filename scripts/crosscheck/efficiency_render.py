@@ -211,6 +211,14 @@ class CyclesSession:
                                      stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                      text=True, env=blender_env())
         self.waiting_since = None
+        self.rendered = 0
+        self.finished = False
+        # Paced, Blender's start-up (launch, import, sync, its 1-spp render: 2-3 s of both
+        # cores) must not run beside penumbra's first timed render, which it slowed to
+        # 2.1 s from 1.0 (cornell, 32 spp): wait here until Blender asks for its first go.
+        if paced:
+            self._read_until("EFFICIENCY-READY")
+            self.waiting_since = time.time()  # from here Blender waits: not its time
 
     def _read_until(self, prefix):
         for line in self.proc.stdout:
@@ -224,19 +232,25 @@ class CyclesSession:
                            % (self.proc.wait(), prefix, " / ".join(tail)))
 
     def render_next(self):
-        """A paced session's next render: waits until Blender is ready, lets it render and
-        waits until it has."""
-        self._read_until("EFFICIENCY-READY")
+        """A paced session's next render: lets Blender render, and returns once it is idle
+        again (waiting for the next go, or, after the last render, exited), so that
+        nothing of Blender's runs beside the renders that follow."""
         if self.waiting_since is not None:
             self.paused_s += time.time() - self.waiting_since
         self.proc.stdin.write("go\n")
         self.proc.stdin.flush()
         self._read_until("EFFICIENCY-RENDERED")
         self.waiting_since = time.time()
+        self.rendered += 1
+        if self.rendered < len(self.todo):
+            self._read_until("EFFICIENCY-READY")
+        else:
+            self.finish()
 
     def finish(self):
-        if self.proc is None:
+        if self.proc is None or self.finished:
             return
+        self.finished = True
         # The rest of the output through the same buffered reader that render_next()
         # used: communicate() reads the pipe itself and would lose what that reader
         # already holds. A timer stands in for communicate()'s timeout.

@@ -180,6 +180,8 @@ log, job = sys.argv[1], json.load(open(sys.argv[2]))
 def line(text):
     print(text)
     sys.stdout.flush()
+time.sleep(0.2)  # start-up: launch, import, sync
+open(log, "a").write("cycles started\n")
 walls = []
 for i, r in enumerate([{"spp": 1, "seed": 0, "out": None}] + job["renders"]):
     if i and job.get("paced"):
@@ -199,6 +201,8 @@ for i, r in enumerate([{"spp": 1, "seed": 0, "out": None}] + job["renders"]):
 line("EFFICIENCY " + json.dumps({"setup_s": 0.1, "render_wall_s": walls,
      "render_cpu_s": [1.0] * len(walls), "cpu_1spp_s": 0.2, "sampling_pattern": "FAKE",
      "version": "fake"}))
+time.sleep(0.2)  # exit
+open(log, "a").write("cycles exited\n")
 """
 
 
@@ -236,10 +240,14 @@ class Interleave(unittest.TestCase):
                 open(log, "a").write("penumbra %d %d\n" % (spp, seed))
                 time.sleep(0.5)  # penumbra's render: not Cycles' process time
                 session.render_next()
+            open(log, "a").write("driver\n")
             time.sleep(1.0)  # the driver's work after Blender's last render
             session.finish()
+            # Blender's start-up and exit never overlap a render of penumbra's or the
+            # driver's work after the last render (they slowed penumbra's renders).
             self.assertEqual(open(log).read().split("\n"),
-                             ["penumbra 16 1", "cycles 16 1", "penumbra 16 2", "cycles 16 2", ""])
+                             ["cycles started", "penumbra 16 1", "cycles 16 1", "penumbra 16 2",
+                              "cycles 16 2", "cycles exited", "driver", ""])
             job = json.load(open(os.path.join(cache.dir, "job.json")))
             self.assertTrue(job["paced"])
             self.assertEqual((job["width"], job["height"]), (4, 2))
