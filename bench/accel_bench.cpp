@@ -120,7 +120,10 @@ ACCEL_BENCH(Sphere1M, Grid, sphere1m_grid);
 // 4 x 2 pixel blocks so that eight consecutive rays are a coherent packet, each pixel
 // jittered; and shadow rays from their hits towards the point light at (0, 0.95, 0).
 struct CornellRays {
-    std::vector<Ray> camera, shadow;
+    // bounce_shadow: from the hits of one diffuse bounce off each camera hit, in the same
+    // order, so that eight consecutive ones are what a batch of a 4 x 2 block's paths
+    // would trace at their second vertex: one endpoint, scattered origins.
+    std::vector<Ray> camera, shadow, bounce_shadow;
 };
 
 const CornellRays& cornell_rays() {
@@ -149,6 +152,19 @@ const CornellRays& cornell_rays() {
             s.d = Vec3(0, 0.95f, 0) - s.o;
             s.tmax = 1 - 1e-4f;
             r.shadow.push_back(s);
+            // A uniform direction on the sphere, turned back towards the camera's side
+            // of the hit: a bounce into the room.
+            Ray b;
+            b.o = s.o;
+            b.d = square_to_uniform_sphere({rng.next_float(), rng.next_float()});
+            if (dot(b.d, c.d) > 0) b.d = -b.d;
+            const auto bounce = accel.intersect(b);
+            if (!bounce) continue;
+            Ray t;
+            t.o = b.o + b.d * (bounce->t * (1 - 1e-4f));
+            t.d = Vec3(0, 0.95f, 0) - t.o;
+            t.tmax = 1 - 1e-4f;
+            r.bounce_shadow.push_back(t);
         }
         return r;
     }();
@@ -192,9 +208,14 @@ void BM_CameraRays8(benchmark::State& state) {
 }
 BENCHMARK(BM_CameraRays8);
 
+// Argument 2 (when given): 1 for the shadow rays of the first bounce's hits.
+const std::vector<Ray>& shadow_rays(const benchmark::State& state, int arg) {
+    return state.range(arg) ? cornell_rays().bounce_shadow : cornell_rays().shadow;
+}
+
 void BM_ShadowRays1(benchmark::State& state) {
     const EmbreeAccel accel(scene_for(Which::Cornell), embree_levels(state.range(0)));
-    const std::vector<Ray>& rays = cornell_rays().shadow;
+    const std::vector<Ray>& rays = shadow_rays(state, 1);
     size_t i = 0, blocked = 0;
     for (auto _ : state) {
         blocked += accel.occluded(rays[i]);
@@ -203,12 +224,13 @@ void BM_ShadowRays1(benchmark::State& state) {
     benchmark::DoNotOptimize(blocked);
     state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(BM_ShadowRays1)->Arg(1)->Arg(0);
+BENCHMARK(BM_ShadowRays1)->Args({1, 0})->Args({0, 0})->Args({1, 1});
 
-// rtcOccluded1M over batches of state.range(0) rays, coherent (1) or incoherent (0) hint.
+// rtcOccluded1M over batches of state.range(0) rays, coherent (1) or incoherent (0) hint,
+// from the camera's hits (0) or the first bounce's (1).
 void BM_ShadowRaysStream(benchmark::State& state) {
     const EmbreeAccel accel(scene_for(Which::Cornell));
-    const std::vector<Ray>& rays = cornell_rays().shadow;
+    const std::vector<Ray>& rays = shadow_rays(state, 2);
     const size_t batch = size_t(state.range(0));
     std::unique_ptr<bool[]> out(new bool[batch]);
     size_t i = 0, blocked = 0;
@@ -221,7 +243,13 @@ void BM_ShadowRaysStream(benchmark::State& state) {
     benchmark::DoNotOptimize(blocked);
     state.SetItemsProcessed(state.iterations() * batch);
 }
-BENCHMARK(BM_ShadowRaysStream)->Args({8, 1})->Args({64, 1})->Args({256, 1})->Args({256, 0});
+BENCHMARK(BM_ShadowRaysStream)
+    ->Args({8, 1, 0})
+    ->Args({64, 1, 0})
+    ->Args({256, 1, 0})
+    ->Args({256, 0, 0})
+    ->Args({8, 1, 1})
+    ->Args({8, 0, 1});
 
 // Build of the 1M-triangle sphere on one core (TBB limited to one thread, which also
 // holds Embree to one thread).
