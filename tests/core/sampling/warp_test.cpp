@@ -167,6 +167,22 @@ TEST(Warp, DensitiesVanishOutsideTheirDomain) {
     EXPECT_GT(cosine_hemisphere_pdf(normalize(Vec3(1, 2, 0.01f))), 0.0f);
 }
 
+// z comes from the disk radius, apart from x and y (square_to_cosine_hemisphere): the
+// three must still make a unit vector, to rounding, over the whole square.
+TEST(Warp, CosineHemisphereDirectionsAreUnit) {
+    const int n = 1024;
+    double worst = 0;
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j) {
+            const Vec2 u(std::min(i / float(n), 0x1.fffffep-1f),
+                         std::min(j / float(n), 0x1.fffffep-1f));
+            const Vec3 w = square_to_cosine_hemisphere(u);
+            const double len = std::sqrt(double(w.x) * w.x + double(w.y) * w.y + double(w.z) * w.z);
+            worst = std::max(worst, std::abs(len - 1));
+        }
+    EXPECT_LT(worst, 3e-7) << worst;
+}
+
 TEST(Warp, ImagesStayInTheirDomains) {
     // The corners and edges of the unit square, where rounding is most likely to escape.
     const float one = 0x1.fffffep-1f;
