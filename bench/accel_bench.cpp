@@ -144,13 +144,18 @@ const CornellRays& cornell_rays() {
                     r.camera.push_back(ray);
                 }
         const EmbreeAccel accel(scene_for(Which::Cornell));
+        // From just before ray's hit at t to the light, stopping short of it.
+        auto to_light = [](const Ray& ray, float t) {
+            Ray s;
+            s.o = ray.o + ray.d * (t * (1 - 1e-4f));
+            s.d = Vec3(0, 0.95f, 0) - s.o;
+            s.tmax = 1 - 1e-4f;
+            return s;
+        };
         for (const Ray& c : r.camera) {
             const auto hit = accel.intersect(c);
             if (!hit) continue;
-            Ray s;
-            s.o = c.o + c.d * (hit->t * (1 - 1e-4f));
-            s.d = Vec3(0, 0.95f, 0) - s.o;
-            s.tmax = 1 - 1e-4f;
+            const Ray s = to_light(c, hit->t);
             r.shadow.push_back(s);
             // A uniform direction on the sphere, turned back towards the camera's side
             // of the hit: a bounce into the room.
@@ -159,12 +164,7 @@ const CornellRays& cornell_rays() {
             b.d = square_to_uniform_sphere({rng.next_float(), rng.next_float()});
             if (dot(b.d, c.d) > 0) b.d = -b.d;
             const auto bounce = accel.intersect(b);
-            if (!bounce) continue;
-            Ray t;
-            t.o = b.o + b.d * (bounce->t * (1 - 1e-4f));
-            t.d = Vec3(0, 0.95f, 0) - t.o;
-            t.tmax = 1 - 1e-4f;
-            r.bounce_shadow.push_back(t);
+            if (bounce) r.bounce_shadow.push_back(to_light(b, bounce->t));
         }
         return r;
     }();
