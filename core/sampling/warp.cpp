@@ -40,8 +40,14 @@ inline float select(bool c, float a, float b) {
 
 Vec2 cos_sin_quarter_pi_for_test(float a) { return cos_sin_quarter_pi(a); }
 
-Vec2 square_to_concentric_disk(Vec2 u) {
+namespace {
+
+// Shirley-Chiu's map, with the point's radius (the major coordinate's magnitude) apart:
+// known before the angle's division and polynomial, it lets the cosine warp's z run
+// beside them.
+inline Vec2 concentric_disk(Vec2 u, float* radius) {
     const float ox = 2 * u.x - 1, oy = 2 * u.y - 1;
+    *radius = std::max(std::abs(ox), std::abs(oy));
     if (ox == 0 && oy == 0) return {0, 0};
     // Shirley-Chiu's two wedges: for |ox| > |oy| the angle is (pi/4) oy/ox, else
     // pi/2 - (pi/4) ox/oy, whose cos and sin are the sin and cos of (pi/4) ox/oy. So one
@@ -53,6 +59,13 @@ Vec2 square_to_concentric_disk(Vec2 u) {
     const Vec2 cs = cos_sin_quarter_pi((kPi / 4) * (q / r));
     const float along = r * cs.x, across = r * cs.y;
     return {select(x_major, along, across), select(x_major, across, along)};
+}
+
+}  // namespace
+
+Vec2 square_to_concentric_disk(Vec2 u) {
+    float radius;
+    return concentric_disk(u, &radius);
 }
 
 float polygon_area(int blades) { return 0.5f * blades * std::sin(2 * kPi / blades); }
@@ -85,13 +98,12 @@ Vec3 square_to_uniform_hemisphere(Vec2 u) {
 }
 
 Vec3 square_to_cosine_hemisphere(Vec2 u) {
-    const Vec2 d = square_to_concentric_disk(u);
-    // The disk point's radius is the major coordinate's magnitude, known before the
-    // angle's division and polynomial: z = sqrt(1 - r^2) from it runs beside them, where
-    // from the point's x and y it waited for them (5% of a Lambertian render).
-    // (1 - r)(1 + r) keeps 1 - r^2 accurate near the rim.
-    const float ox = 2 * u.x - 1, oy = 2 * u.y - 1;
-    const float r = std::max(std::abs(ox), std::abs(oy));
+    // z = sqrt(1 - r^2) from the disk radius runs beside the angle's division and
+    // polynomial; from the point's x and y it waited for them (4.7% of the point-light
+    // Cornell box's profile, 3.3% this way). (1 - r)(1 + r) keeps 1 - r^2 accurate near
+    // the rim.
+    float r;
+    const Vec2 d = concentric_disk(u, &r);
     const float z = std::sqrt(std::max(0.0f, (1 - r) * (1 + r)));
     return {d.x, d.y, z};
 }
