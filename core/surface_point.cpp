@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "core/facet.h"
 #include "core/scene/motion.h"
@@ -181,8 +182,11 @@ SurfacePoint surface_point_on(const TriangleMesh& mesh, const Transform& xf, con
 SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
     const Instance& inst = scene.instances[hit.instance];
     const TriangleMesh& mesh = scene.meshes[hit.mesh];
-    if (inst.motion.empty()) return surface_point_on(mesh, inst.to_world, ray, hit);
-    return surface_point_on(mesh, instance_transform_at(inst, ray.time), ray, hit);
+    // One call, which the compiler inlines here: a moving instance's transform at the
+    // ray's time goes into an optional, so that a static one's is read in place.
+    std::optional<Transform> moving;
+    if (!inst.motion.empty()) moving = instance_transform_at(inst, ray.time);
+    return surface_point_on(mesh, moving ? *moving : inst.to_world, ray, hit);
 }
 
 Vec3 smooth_surface_point(Vec3 p, const Vec3 v[3], const Vec3 n[3], const float b[3]) {

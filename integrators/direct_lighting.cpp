@@ -43,11 +43,13 @@ float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
 
 namespace {
 
-// The light-sampling estimate for one point u on an already chosen light.
-Spectrum sample_chosen_light(const RenderContext& ctx, const SurfacePoint& sp,
-                             const ShadingData& sd, Vec3 wo, float time,
-                             const SampledLight* chosen, Vec2 u, LightStrategy strategy,
-                             float light_samples, float bsdf_samples, const SideMedia& media) {
+// The light-sampling estimate for one point u on an already chosen light. Inlined into
+// sample_one_light, which runs at every path vertex: a call passing its eleven arguments
+// cost about 30 instructions a vertex.
+[[gnu::always_inline]] inline Spectrum sample_chosen_light(
+    const RenderContext& ctx, const SurfacePoint& sp, const ShadingData& sd, Vec3 wo, float time,
+    const SampledLight* chosen, Vec2 u, LightStrategy strategy, float light_samples,
+    float bsdf_samples, const SideMedia& media) {
     const Light& light = *chosen->light;
     // Light-sampling estimates of non-delta lights are dropped under BSDF-only.
     if (strategy == LightStrategy::BsdfOnly && !light.is_delta()) return Spectrum(0);
@@ -90,16 +92,18 @@ Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
     // (the Cornell box's two-triangle panel) then stay stratified over all of it, not
     // over each triangle apart; direct light's relMSE there fell 30% at 64 spp
     // (docs/performance.md). u_light is drawn in every case, so that the sampler's
-    // dimensions do not depend on the light sampler.
-    const float u_light = sampler.get_1d();
+    // dimensions do not depend on the light sampler (deferred: a remapping choice does
+    // not read it).
+    const PathSampler::Deferred1d u_light = sampler.defer_1d();
     const Vec2 u = sampler.get_2d();
     // The remapped coordinate goes to its own float: written through a pointer into u
     // and read back as the whole Vec2, it stalled on store forwarding (a third of this
     // function's time in the profile).
     float u_x = u.x;
     const std::optional<SampledLight> chosen =
-        ctx.lights.remaps_choice() ? ctx.lights.sample_remapped(u.x, &u_x)
-                                   : ctx.lights.sample(ShadingPoint{sp.p, sd.ng}, u_light);
+        ctx.lights.remaps_choice()
+            ? ctx.lights.sample_remapped(u.x, &u_x)
+            : ctx.lights.sample(ShadingPoint{sp.p, sd.ng}, sampler.value(u_light));
     if (!chosen) return Spectrum(0);
     return sample_chosen_light(ctx, sp, sd, wo, time, &*chosen,
                                Vec2(u_x, u.y), strategy, light_samples, bsdf_samples, media);

@@ -91,7 +91,10 @@ bool render_samples(const RenderContext& ctx, const Camera& camera, const Integr
             fs = filter.sample(sampler.get_pixel_2d());
             CameraSample cs;
             cs.film = {x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
-            cs.lens = sampler.get_2d();
+            if (camera.reads_lens())
+                cs.lens = sampler.get_2d();
+            else
+                sampler.skip_2d();
             cs.time = sampler.get_1d();
             Ray ray = camera.generate_ray(cs);
             if (!ctx.ray_cones) ray.cone = RayCone{};

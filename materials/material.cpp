@@ -95,7 +95,9 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     sd.ng = ng;
     sd.frame = Frame::from_normal(ns);
     // KHR_materials_anisotropy turns the frame's x to the anisotropy direction.
-    const float anisotropy = align_anisotropy_frame(scene, m, sp, sd.frame);
+    // The call only where there is anisotropy to align (it returns 0 for the rest).
+    const float anisotropy =
+        m.anisotropy_strength > 0 ? align_anisotropy_frame(scene, m, sp, sd.frame) : 0.0f;
 
     Vec4 base = m.base_color * sp.color;
     if (m.base_color_texture.valid()) base = base * sample_texture(scene, m.base_color_texture, sp);
@@ -144,7 +146,7 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     if (options.prototypes) {
         if (const BsdfStorage* proto = options.prototypes->find(uint32_t(sp.material), sp.color,
                                                                 options)) {
-            sd.bsdf = *proto;
+            sd.bsdf.use(*proto);
             return sd;
         }
     }

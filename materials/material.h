@@ -22,14 +22,30 @@ namespace penumbra {
 // Holds whichever model the material turned into, without a heap allocation per hit.
 // The model is also kept as a pointer, so that the integrators' BSDF calls (one per light
 // sample and bounce) do not each go through std::visit; a copy points into its own storage.
+// It may instead refer to a model held elsewhere (a material's prototype, which outlives
+// every hit, when the model keeps no state): its own storage then stays empty, and copies
+// refer to the same model.
 class BsdfStorage {
 public:
     BsdfStorage() = default;
-    BsdfStorage(const BsdfStorage& o) : m_v(o.m_v), m_bsdf(o.m_bsdf ? held() : nullptr) {}
+    BsdfStorage(const BsdfStorage& o) : m_v(o.m_v), m_bsdf(o.m_bsdf) { rebind(); }
     BsdfStorage& operator=(const BsdfStorage& o) {
         m_v = o.m_v;
-        m_bsdf = o.m_bsdf ? held() : nullptr;
+        m_bsdf = o.m_bsdf;
+        rebind();
         return *this;
+    }
+    // The model that proto holds, in place where it keeps no state between calls (the
+    // diffuse ones: no copy per hit), else copied: MetalRoughBsdf keeps its last wo's
+    // terms, which hits of other threads would overwrite.
+    void use(const BsdfStorage& proto) {
+        if (std::holds_alternative<LambertianBsdf>(proto.m_v) ||
+            std::holds_alternative<OrenNayarBsdf>(proto.m_v)) {
+            m_v = std::monostate{};
+            m_bsdf = proto.get();
+        } else {
+            *this = proto;
+        }
     }
     // Constructs the model in place from its constructor's arguments: a model built
     // first and then copied in moved its few hundred bytes twice per hit.
@@ -42,6 +58,11 @@ public:
 
 private:
     const Bsdf* held() const;  // the alternative m_v holds (std::visit)
+    // After a copy: a model of its own is pointed to in this storage, one referred to
+    // stays where it is.
+    void rebind() {
+        if (m_v.index() != 0) m_bsdf = held();
+    }
     std::variant<std::monostate, LambertianBsdf, OrenNayarBsdf, MetalRoughBsdf,
                  GltfTransmissionBsdf, DielectricBsdf, ConductorBsdf, CookTorranceBsdf, GltfBsdf>
         m_v;

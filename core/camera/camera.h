@@ -21,6 +21,8 @@ public:
     virtual ~Camera() = default;
     // The returned direction is unit length.
     virtual Ray generate_ray(const CameraSample& s) const = 0;
+    // Whether generate_ray reads CameraSample::lens: a pinhole's caller skips drawing it.
+    virtual bool reads_lens() const { return true; }
     int width() const { return m_width; }
     int height() const { return m_height; }
 

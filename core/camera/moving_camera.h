@@ -16,6 +16,7 @@ public:
     // local: the camera with an identity to_world (rays in camera space).
     MovingCamera(std::unique_ptr<Camera> local, const std::vector<Transform>& steps);
     Ray generate_ray(const CameraSample& s) const override;
+    bool reads_lens() const override { return m_local->reads_lens(); }
 
 private:
     std::unique_ptr<Camera> m_local;

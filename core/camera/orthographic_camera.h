@@ -11,6 +11,7 @@ public:
     OrthographicCamera(const Transform& to_world, float xmag, float ymag, int width,
                        int height);
     Ray generate_ray(const CameraSample& s) const override;
+    bool reads_lens() const override { return false; }  // no lens
 
 private:
     Transform m_to_world;

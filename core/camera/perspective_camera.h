@@ -9,6 +9,7 @@ class PerspectiveCamera final : public Camera {
 public:
     PerspectiveCamera(const Transform& to_world, float yfov, int width, int height);
     Ray generate_ray(const CameraSample& s) const override;
+    bool reads_lens() const override { return false; }  // a pinhole
 
 private:
     Transform m_to_world;

@@ -25,6 +25,9 @@ public:
     virtual Vec2 get_2d() = 0;
     // The film position within the pixel (the first 2D dimension), in [0,1)^2.
     virtual Vec2 get_pixel_2d() = 0;
+    // Takes the next 2D dimension without its value (a pinhole camera's lens sample), so
+    // that the dimensions after it are the same whether or not it is read.
+    virtual void skip_2d() { get_2d(); }
     virtual std::unique_ptr<Sampler> clone() const = 0;
     uint32_t samples_per_pixel() const { return m_spp; }
 

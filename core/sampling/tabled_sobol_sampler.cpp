@@ -37,6 +37,7 @@ TabledSobolSampler::TabledSobolSampler(uint32_t spp, uint64_t seed) : Sampler(sp
         }
     }
     m_table = std::move(table);
+    m_entries = m_table->data();
 }
 
 void TabledSobolSampler::start_pixel_sample(PixelCoord p, uint32_t sample_index) {

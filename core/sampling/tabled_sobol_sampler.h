@@ -48,6 +48,16 @@ public:
         return {(uint32_t(w) >> 8) * 0x1p-24f, uint32_t(w >> 40) * 0x1p-24f};
     }
     Vec2 get_pixel_2d() override { return get_2d(); }
+    void skip_2d() override { m_key += 2 * kGolden; }
+    // A 1D value whose use depends on what the caller draws next (the light choice of a
+    // light sampler that does not remap): skip_1d() takes its dimension, and value_1d()
+    // of what it returned gives the value that get_1d() would have, when it is needed.
+    uint64_t skip_1d() {
+        const uint64_t key = m_key;
+        m_key += kGolden;
+        return key;
+    }
+    float value_1d(uint64_t skipped) const { return (uint32_t(entry(skipped)) >> 8) * 0x1p-24f; }
     std::unique_ptr<Sampler> clone() const override {
         return std::make_unique<TabledSobolSampler>(*this);
     }
@@ -57,12 +67,16 @@ public:
     uint64_t table_entry(uint32_t e) const { return (*m_table)[e]; }
 
 private:
-    uint64_t entry() const {
-        const uint64_t h = mix_bits(m_key);
+    uint64_t entry() const { return entry(m_key); }
+    uint64_t entry(uint64_t key) const {
+        const uint64_t h = mix_bits(key);
         const uint32_t sel = (uint32_t(h) & 0xffu) | (uint32_t(h >> 24) & 0xff00u);
-        return (*m_table)[(sel ^ m_index) & m_select_mask] ^ h;
+        return m_entries[(sel ^ m_index) & m_select_mask] ^ h;
     }
     std::shared_ptr<const std::vector<uint64_t>> m_table;
+    // m_table's data, which the shared table keeps alive for every copy: one load less
+    // per draw than through the shared pointer and the vector.
+    const uint64_t* m_entries = nullptr;
     uint32_t m_select_mask = 0;  // tables() * spp - 1
     uint32_t m_index = 0;
     PixelCoord m_pixel{-1, -1};

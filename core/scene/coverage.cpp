@@ -6,15 +6,6 @@
 
 namespace penumbra {
 
-float coverage_from_alpha(const MaterialDesc& m, float alpha) {
-    switch (m.alpha_mode) {
-        case AlphaMode::Opaque: return 1;
-        case AlphaMode::Mask: return alpha >= m.alpha_cutoff ? 1.0f : 0.0f;
-        case AlphaMode::Blend: return std::clamp(alpha, 0.0f, 1.0f);
-    }
-    return 1;
-}
-
 float material_coverage(const Scene& scene, const MaterialDesc& m, Vec2 uv0, Vec2 uv1,
                         float vertex_alpha, const float* uv_width) {
     if (m.alpha_mode == AlphaMode::Opaque) return 1;

@@ -3,13 +3,26 @@
 // lights that sample emissive triangles, so that every estimator sees the same surface.
 #pragma once
 
+#include <algorithm>
+
 #include "core/scene/scene.h"
 
 namespace penumbra {
 
 // From the alpha (baseColorFactor's, times COLOR_0's, times the base colour texture's):
 // 1 for OPAQUE, 0 or 1 by alphaCutoff for MASK, the alpha clamped to [0, 1] for BLEND.
-float coverage_from_alpha(const MaterialDesc& m, float alpha);
+// Inline: shade() asks at every hit.
+inline float coverage_from_alpha(const MaterialDesc& m, float alpha) {
+    switch (m.alpha_mode) {
+        case AlphaMode::Opaque:
+            return 1;
+        case AlphaMode::Mask:
+            return alpha >= m.alpha_cutoff ? 1.0f : 0.0f;
+        case AlphaMode::Blend:
+            return std::clamp(alpha, 0.0f, 1.0f);
+    }
+    return 1;
+}
 
 // The coverage at a point with texture coordinates uv0 / uv1 and COLOR_0 alpha
 // vertex_alpha. uv_width: the footprint in each UV set (SurfacePoint::uv_width); null

@@ -23,9 +23,9 @@ size_t Scene::triangle_count() const {
     return n;
 }
 
-const MaterialDesc& Scene::material(int index) const {
-    static const MaterialDesc default_material;
-    return index >= 0 ? materials[index] : default_material;
+const MaterialDesc& Scene::default_material() {
+    static const MaterialDesc material;
+    return material;
 }
 
 }  // namespace penumbra

@@ -103,7 +103,11 @@ struct Scene {
     // Whether any instance, mesh or camera has time steps (motion.h).
     bool has_motion() const;
     size_t triangle_count() const;  // counting each instance's triangles
-    const MaterialDesc& material(int index) const;
+    // Inline: every hit looks its material up.
+    const MaterialDesc& material(int index) const {
+        return index >= 0 ? materials[size_t(index)] : default_material();
+    }
+    static const MaterialDesc& default_material();  // glTF's, for primitives without one
 };
 
 }  // namespace penumbra

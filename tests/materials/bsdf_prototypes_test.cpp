@@ -116,6 +116,48 @@ TEST(BsdfPrototypes, ShadeGivesTheSameBsdfBitForBitUnderEveryDistributionAndLaye
     }
 }
 
+// A hit shares the prototype's model itself only where the model keeps no state between
+// calls (the diffuse ones); the others keep per-call state (MetalRoughBsdf's last wo's
+// terms) and must be copied into each hit's ShadingData, or threads would overwrite one
+// another's. Copies of a ShadingData keep what they copy: the shared model, or a model
+// of their own.
+TEST(BsdfPrototypes, HitsShareOnlyStatelessModels) {
+    Scene scene;
+    scene.materials = uniform_materials();
+    const MaterialOptions options;
+    const BsdfPrototypes prototypes(scene, options);
+    MaterialOptions with = options;
+    with.prototypes = &prototypes;
+    int shared = 0, copied = 0;
+    for (uint32_t mi = 0; mi < scene.materials.size(); ++mi) {
+        SCOPED_TRACE("material " + std::to_string(mi));
+        const BsdfStorage* proto = prototypes.find(mi, Vec4(1, 1, 1, 1), options);
+        ASSERT_NE(proto, nullptr);
+        SurfacePoint sp;
+        sp.material = int(mi);
+        sp.ng = sp.ns = Vec3(0, 0, 1);
+        const ShadingData sd = shade(scene, sp, normalize(Vec3(0.3f, 0.2f, 1)), with);
+        const ShadingData copy = sd;
+        const bool stateless = dynamic_cast<const LambertianBsdf*>(proto->get()) != nullptr ||
+                               dynamic_cast<const OrenNayarBsdf*>(proto->get()) != nullptr;
+        if (stateless) {
+            ++shared;
+            EXPECT_EQ(sd.bsdf.get(), proto->get());
+            EXPECT_EQ(copy.bsdf.get(), proto->get());
+        } else {
+            ++copied;
+            EXPECT_NE(sd.bsdf.get(), proto->get());
+            EXPECT_NE(copy.bsdf.get(), sd.bsdf.get());
+            // The copy's model lies in the copy's own storage.
+            const char* base = reinterpret_cast<const char*>(&copy);
+            const char* model = reinterpret_cast<const char*>(copy.bsdf.get());
+            EXPECT_TRUE(model >= base && model < base + sizeof copy);
+        }
+    }
+    EXPECT_GT(shared, 0);
+    EXPECT_GT(copied, 0);
+}
+
 TEST(BsdfPrototypes, NoneWhereATextureThePathOrTheFrameChangesTheModel) {
     std::vector<MaterialDesc> varying;
     const auto add = [&](auto change) {

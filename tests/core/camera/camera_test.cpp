@@ -13,6 +13,37 @@ Vec2 slope(const Camera& cam, const Transform& to_world, Vec2 film) {
     return {d.x / -d.z, d.y / -d.z};
 }
 
+// A camera that says it does not read the lens sample (the render loop then skips
+// drawing it) gives the same ray, bit for bit, whatever the lens sample; one with an
+// aperture reads it. Moving cameras answer as the camera they move.
+TEST(MakeCamera, OnlyCamerasWithALensReadTheLensSample) {
+    CameraDesc pinhole, ortho, lens, moving;
+    pinhole.to_world = Transform::look_at({0, 1, 5}, {0, 0, 0}, {0, 1, 0});
+    ortho = pinhole;
+    ortho.type = ProjectionType::Orthographic;
+    lens = pinhole;
+    lens.aperture_radius = 0.05f;
+    lens.focus_distance = 5;
+    moving = pinhole;
+    moving.motion = {pinhole.to_world, Transform::translate({0.1f, 0, 0}) * pinhole.to_world};
+    for (const CameraDesc* desc : {&pinhole, &ortho, &moving}) {
+        const auto cam = make_camera(*desc, 64, 48);
+        ASSERT_FALSE(cam->reads_lens());
+        for (float time : {0.0f, 0.6f}) {
+            const Ray a = cam->generate_ray({{10.5f, 20.25f}, {0.1f, 0.2f}, time});
+            const Ray b = cam->generate_ray({{10.5f, 20.25f}, {0.9f, 0.7f}, time});
+            for (int i = 0; i < 3; ++i) {
+                EXPECT_EQ(a.o[i], b.o[i]);
+                EXPECT_EQ(a.d[i], b.d[i]);
+            }
+        }
+    }
+    EXPECT_TRUE(make_camera(lens, 64, 48)->reads_lens());
+    CameraDesc moving_lens = lens;
+    moving_lens.motion = moving.motion;
+    EXPECT_TRUE(make_camera(moving_lens, 64, 48)->reads_lens());
+}
+
 TEST(MakeCamera, PerspectiveKeepsYfovAndSquarePixels) {
     CameraDesc desc;
     desc.type = ProjectionType::Perspective;

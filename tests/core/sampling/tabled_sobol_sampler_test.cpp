@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/sampling/hash.h"
+#include "core/sampling/path_sampler.h"
 #include "tests/support/chi2.h"
 #include "tests/support/sampler_checks.h"
 
@@ -191,6 +192,51 @@ TEST(TabledSobolSampler, PairsOfDifferentDrawsDecorrelateWithinPixels) {
 TEST(TabledSobolSampler, PrefixesOfTheBudgetAreUnbiased) {
     test::expect_unbiased_prefixes(
         [](uint64_t seed) { return std::make_unique<TabledSobolSampler>(64, seed); });
+}
+
+// Skipping a dimension (a pinhole camera's lens sample) or deferring one (the light
+// choice that a remapping light sampler does not read) leaves every value the same as
+// drawing it: the images do not change with what is read.
+TEST(TabledSobolSampler, SkippedAndDeferredDimensionsKeepTheOthers) {
+    TabledSobolSampler drawn(64, 9), skipped(64, 9);
+    for (uint32_t i = 0; i < 64; ++i) {
+        drawn.start_pixel_sample({5, 11}, i);
+        skipped.start_pixel_sample({5, 11}, i);
+        const Vec2 a0 = drawn.get_2d(), b0 = skipped.get_2d();
+        EXPECT_EQ(a0.x, b0.x);
+        EXPECT_EQ(a0.y, b0.y);
+        drawn.get_2d();
+        skipped.skip_2d();
+        const float a1 = drawn.get_1d();
+        PathSampler path(skipped);
+        const PathSampler::Deferred1d d = path.defer_1d();
+        const Vec2 a2 = drawn.get_2d(), b2 = path.get_2d();
+        EXPECT_EQ(a2.x, b2.x);
+        EXPECT_EQ(a2.y, b2.y);
+        EXPECT_EQ(a1, path.value(d));  // read after the draws that followed it
+        EXPECT_EQ(drawn.get_1d(), skipped.get_1d());
+    }
+}
+
+// Other samplers draw a skipped or deferred dimension as they would any other.
+TEST(TabledSobolSampler, OtherSamplersDrawSkippedAndDeferredDimensions) {
+    for (SamplerType type : {SamplerType::Stratified, SamplerType::Sobol, SamplerType::ZSobol,
+                             SamplerType::Independent}) {
+        SCOPED_TRACE(int(type));
+        std::unique_ptr<Sampler> drawn = make_sampler(type, 16, 3);
+        std::unique_ptr<Sampler> skipped = make_sampler(type, 16, 3);
+        drawn->start_pixel_sample({2, 3}, 5);
+        skipped->start_pixel_sample({2, 3}, 5);
+        drawn->get_2d();
+        skipped->skip_2d();
+        const float a = drawn->get_1d();
+        PathSampler path(*skipped);
+        const PathSampler::Deferred1d d = path.defer_1d();
+        const Vec2 a2 = drawn->get_2d(), b2 = path.get_2d();
+        EXPECT_EQ(a2.x, b2.x);
+        EXPECT_EQ(a2.y, b2.y);
+        EXPECT_EQ(a, path.value(d));
+    }
 }
 
 TEST(TabledSobolSampler, OtherCountsGetTheStratifiedSampler) {
