@@ -28,6 +28,8 @@ if [ "${1:-}" = "--test" ]; then
         embree-tools
         # A single-node Slurm cluster for the farm test (tests/farm/run_slurm_test.sh).
         slurm-wlm munge
+        # Instruction counts of a render (scripts/render_instructions.sh).
+        valgrind
     )
 fi
 
