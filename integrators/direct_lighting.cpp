@@ -20,9 +20,7 @@ Coverage partial_coverage(const ShadingData& sd, Sampler& sampler) {
     return {sd.opacity, sampler.get_1d() >= sd.opacity};
 }
 
-float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
-    // By reference: a copy of the ray spawn_ray just wrote stalls on store forwarding.
-    if (!ctx.has_alpha) return ctx.accel.occluded(shadow) ? 0.0f : 1.0f;
+float shadow_transmittance_through(const RenderContext& ctx, const Ray& shadow) {
     // Walk through surfaces that let light through, multiplying their transparency:
     // the expectation of the camera paths' stochastic alpha, without its coin flips
     // (Cycles' transparent shadows). Behind a lens of alpha 0.4 a coin flip makes

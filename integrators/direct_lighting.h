@@ -54,10 +54,18 @@ Coverage partial_coverage(const ShadingData& sd, Sampler& sampler);
 // Moves `ray` on beyond the surface at sp, as if the surface were not there.
 void step_through(const SurfacePoint& sp, const ShadingData& sd, Ray& ray);
 
+// shadow_transmittance in a scene with partial coverage: the walk through its surfaces.
+float shadow_transmittance_through(const RenderContext& ctx, const Ray& shadow);
+
 // The share of light that the segment `shadow` carries to its tmax: 0 when an opaque
 // surface blocks it, else the product of (1 - opacity) over the partly covered (alpha)
-// surfaces it crosses.
-float shadow_transmittance(const RenderContext& ctx, const Ray& shadow);
+// surfaces it crosses. Inline: without partial coverage it is one occlusion query, and
+// every light sample asks it.
+inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
+    // By reference: a copy of the ray spawn_ray just wrote stalls on store forwarding.
+    if (!ctx.has_alpha) return ctx.accel.occluded(shadow) ? 0.0f : 1.0f;
+    return shadow_transmittance_through(ctx, shadow);
+}
 
 // One light sample at the shading point, MIS-weighted against `bsdf_samples` BSDF samples
 // per `light_samples` light samples when strategy is Mis. Returns f * Li * |cos| * w / pdf,
