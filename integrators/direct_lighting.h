@@ -67,14 +67,76 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
     return shadow_transmittance_through(ctx, shadow);
 }
 
+// The light-sampling estimate for one point u on an already chosen light. Inlined into
+// sample_one_light and sample_light_stratified: a call passing its eleven arguments cost
+// about 30 instructions a vertex.
+[[gnu::always_inline]] inline Spectrum sample_chosen_light(
+    const RenderContext& ctx, const SurfacePoint& sp, const ShadingData& sd, Vec3 wo, float time,
+    const SampledLight* chosen, Vec2 u, LightStrategy strategy, float light_samples,
+    float bsdf_samples, const SideMedia& media) {
+    const Light& light = *chosen->light;
+    // Light-sampling estimates of non-delta lights are dropped under BSDF-only.
+    if (strategy == LightStrategy::BsdfOnly && !light.is_delta()) return Spectrum(0);
+    const ShadingPoint ref{sp.p, sd.ng};
+    const std::optional<LightSample> ls = light.sample_Li(ref, u, time);
+    if (!ls || !(ls->pdf > 0)) return Spectrum(0);
+    const Vec3 wi = sd.frame.to_local(ls->wi);
+    // The shading frame and the interpolated normal must agree on the side, or light
+    // leaks (spawn_ray then keeps rays the facet's plane puts behind from leaking).
+    if ((wi.z > 0) != (dot(ls->wi, side_normal(sp, sd.ng)) > 0)) return Spectrum(0);
+    const Bsdf& bsdf = *sd.bsdf.get();
+    // The BSDF's density for the MIS weight comes with f where the weight needs it (one
+    // pass over the shared terms), so only after the shadow ray is it read.
+    const bool weighted = !ls->delta && strategy == LightStrategy::Mis;
+    float bsdf_pdf = 0;
+    const Spectrum f = (weighted ? bsdf.eval_pdf(wo, wi, Transport::Radiance, &bsdf_pdf)
+                                 : bsdf.eval(wo, wi, Transport::Radiance)) *
+                       bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, ls->wi);
+    if (is_black(f)) return Spectrum(0);
+    const Ray shadow = spawn_ray(sp, ls->wi, ls->dist, time);
+    const float transparency = shadow_transmittance(ctx, shadow);
+    if (!(transparency > 0)) return Spectrum(0);
+    Spectrum tr(transparency);
+    if (const Medium* medium = wi.z > 0 ? media.wo_side : media.far_side)
+        tr *= medium->transmittance(shadow, ls->dist);
+    const float light_pdf = chosen->pmf * ls->pdf;
+    const float w =
+        weighted ? power_heuristic(light_samples, light_pdf, bsdf_samples, bsdf_pdf) : 1.0f;
+    return f * tr * ls->Li * (std::abs(wi.z) * w / light_pdf);
+}
+
 // One light sample at the shading point, MIS-weighted against `bsdf_samples` BSDF samples
 // per `light_samples` light samples when strategy is Mis. Returns f * Li * |cos| * w / pdf,
 // times the transmittance of the medium the shadow ray starts in (media: wo's side for
-// reflection, the far side for transmission; surfaces on the way block it).
-Spectrum sample_one_light(const RenderContext& ctx, const SurfacePoint& sp,
-                          const ShadingData& sd, Vec3 wo, float time, PathSampler& sampler,
-                          LightStrategy strategy, float light_samples = 1,
-                          float bsdf_samples = 1, const SideMedia& media = {});
+// reflection, the far side for transmission; surfaces on the way block it). Inline into
+// the path tracer's loop, its one caller: the call's set-up and its eleven arguments cost
+// about 25 instructions a vertex, 1% of the render's (docs/performance.md, sixteenth
+// session).
+[[gnu::always_inline]] inline Spectrum sample_one_light(
+    const RenderContext& ctx, const SurfacePoint& sp, const ShadingData& sd, Vec3 wo, float time,
+    PathSampler& sampler, LightStrategy strategy, float light_samples = 1, float bsdf_samples = 1,
+    const SideMedia& media = {}) {
+    // Where the choice allows it, the light sample's first coordinate chooses the light
+    // too (rescaled, as Cycles does): the points on an emitter made of several triangles
+    // (the Cornell box's two-triangle panel) then stay stratified over all of it, not
+    // over each triangle apart; direct light's relMSE there fell 30% at 64 spp
+    // (docs/performance.md). u_light is drawn in every case, so that the sampler's
+    // dimensions do not depend on the light sampler (deferred: a remapping choice does
+    // not read it).
+    const PathSampler::Deferred1d u_light = sampler.defer_1d();
+    const Vec2 u = sampler.get_2d();
+    // The remapped coordinate goes to its own float: written through a pointer into u
+    // and read back as the whole Vec2, it stalled on store forwarding (a third of this
+    // function's time in the profile).
+    float u_x = u.x;
+    const std::optional<SampledLight> chosen =
+        ctx.lights.remaps_choice()
+            ? ctx.lights.sample_remapped(u.x, &u_x)
+            : ctx.lights.sample(ShadingPoint{sp.p, sd.ng}, sampler.value(u_light));
+    if (!chosen) return Spectrum(0);
+    return sample_chosen_light(ctx, sp, sd, wo, time, &*chosen, Vec2(u_x, u.y), strategy,
+                               light_samples, bsdf_samples, media);
+}
 
 // Distribution ray tracing's soft shadows: one light chosen for the point, then n shadow rays
 // to n different points of it, stratified over the light (a Latin hypercube of its

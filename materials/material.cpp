@@ -136,11 +136,10 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     metallic = std::clamp(metallic, 0.0f, 1.0f);
 
     // Single-sided emitters (doubleSided false) emit from the glTF front face only. A
-    // black factor is the result as it stands (emitted_radiance reads no texture then).
-    if (emits_towards(m, front_normal(sp), wo)) {
-        const Spectrum e = m.emissive * m.emissive_strength;
-        sd.emission = is_black(e) ? e : emitted_radiance(scene, m, sp.uv0, sp.uv1, sp.uv_width);
-    }
+    // black factor leaves the emission black (emitted_radiance reads no texture then):
+    // tested first, as most materials emit nothing, so that their hits skip the side test.
+    if (!is_black(m.emissive * m.emissive_strength) && emits_towards(m, front_normal(sp), wo))
+        sd.emission = emitted_radiance(scene, m, sp.uv0, sp.uv1, sp.uv_width);
 
     // A material that is the same at every hit has its model built already.
     if (options.prototypes) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 namespace penumbra {
 
@@ -62,10 +63,18 @@ inline Vec3 max(Vec3 a, Vec3 b) {
 }
 inline float max_component(Vec3 a) { return std::max(a.x, std::max(a.y, a.z)); }
 inline float min_component(Vec3 a) { return std::min(a.x, std::min(a.y, a.z)); }
-inline bool is_finite(Vec3 a) {
-    return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
+// Both tests run a few times per path vertex. Written without a branch per component
+// (three compares and branches each, about 75 instructions a vertex together):
+// x - x is +0 for every finite x and NaN for an infinity or a NaN, and x == 0 holds for
+// exactly the two bit patterns of +0 and -0, which differ only in the sign bit.
+inline bool is_finite(Vec3 a) { return (a.x - a.x) + (a.y - a.y) + (a.z - a.z) == 0; }
+inline bool is_black(Vec3 a) {
+    uint32_t x, y, z;
+    std::memcpy(&x, &a.x, sizeof x);
+    std::memcpy(&y, &a.y, sizeof y);
+    std::memcpy(&z, &a.z, sizeof z);
+    return ((x | y | z) << 1) == 0;
 }
-inline bool is_black(Vec3 a) { return a.x == 0 && a.y == 0 && a.z == 0; }
 // Reflect w about n (both pointing away from the surface).
 inline Vec3 reflect(Vec3 w, Vec3 n) { return 2.0f * dot(w, n) * n - w; }
 // Flip v to the hemisphere of ref.
