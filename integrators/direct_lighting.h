@@ -5,10 +5,12 @@
 
 #include <algorithm>
 
+#include "core/lights/point_light.h"
 #include "core/sampling/path_sampler.h"
 #include "core/surface_point.h"
 #include "integrators/integrator.h"
 #include "integrators/path_media.h"
+#include "materials/bsdf_calls.h"
 #include "materials/material.h"
 
 namespace penumbra {
@@ -78,7 +80,7 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
     // Light-sampling estimates of non-delta lights are dropped under BSDF-only.
     if (strategy == LightStrategy::BsdfOnly && !light.is_delta()) return Spectrum(0);
     const ShadingPoint ref{sp.p, sd.ng};
-    const std::optional<LightSample> ls = light.sample_Li(ref, u, time);
+    const std::optional<LightSample> ls = sample_light_Li(light, ref, u, time);
     if (!ls || !(ls->pdf > 0)) return Spectrum(0);
     const Vec3 wi = sd.frame.to_local(ls->wi);
     // The shading frame and the interpolated normal must agree on the side, or light
@@ -89,8 +91,8 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
     // pass over the shared terms), so only after the shadow ray is it read.
     const bool weighted = !ls->delta && strategy == LightStrategy::Mis;
     float bsdf_pdf = 0;
-    const Spectrum f = (weighted ? bsdf.eval_pdf(wo, wi, Transport::Radiance, &bsdf_pdf)
-                                 : bsdf.eval(wo, wi, Transport::Radiance)) *
+    const Spectrum f = (weighted ? bsdf_eval_pdf(bsdf, wo, wi, Transport::Radiance, &bsdf_pdf)
+                                 : bsdf_eval(bsdf, wo, wi, Transport::Radiance)) *
                        bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, ls->wi);
     if (is_black(f)) return Spectrum(0);
     const Ray shadow = spawn_ray(sp, ls->wi, ls->dist, time);

@@ -5,6 +5,7 @@
 
 #include "core/sampling/path_sampler.h"
 #include "integrators/direct_lighting.h"
+#include "materials/bsdf_calls.h"
 
 namespace penumbra {
 
@@ -141,7 +142,8 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         // arguments (unspecified in C++), written out so every compiler draws the same.
         const Vec2 u_dir = draws.get_2d();
         const float u_lobe = draws.get_1d();
-        const std::optional<BsdfSample> bs = bsdf.sample(wo, u_lobe, u_dir, Transport::Radiance);
+        const std::optional<BsdfSample> bs =
+            bsdf_sample(bsdf, wo, u_lobe, u_dir, Transport::Radiance);
         if (!bs) break;
         const Vec3 wi_world = sd.frame.to_world(bs->wi);
         // Directions the interpolated normal puts on the other side than the lobe would

@@ -41,6 +41,16 @@ public:
                                              Transport mode) const = 0;
     // True when some lobe is a Dirac delta (perfect mirror or glass).
     virtual bool has_specular() const = 0;
+    // Whether this is a LambertianBsdf: the integrators' inner loops call that model
+    // without the virtual dispatch (bsdf_calls.h).
+    bool is_lambertian() const { return m_lambertian; }
+
+protected:
+    Bsdf() = default;
+    explicit Bsdf(bool lambertian) : m_lambertian(lambertian) {}
+
+private:
+    bool m_lambertian = false;
 };
 
 }  // namespace penumbra

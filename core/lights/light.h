@@ -46,6 +46,16 @@ public:
     // infinity and for emitters that move within the shutter (sampled beside the tree).
     virtual std::optional<LightBounds> bounds() const { return std::nullopt; }
     virtual std::string describe() const = 0;
+    // Whether this is a PointLight: the light sample of a path vertex calls its sample_Li
+    // directly (sample_light_Li in point_light.h).
+    bool is_point() const { return m_point; }
+
+protected:
+    Light() = default;
+    explicit Light(bool point) : m_point(point) {}
+
+private:
+    bool m_point = false;
 };
 
 }  // namespace penumbra
