@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Instructions that penumbra binaries execute inside the render loop (render_samples and
 # all it calls, Embree included), counted by valgrind's callgrind: the same count on
-# every run, so two builds can be compared where timing cannot resolve a few percent (on
-# a VM whose speed swings by 30% from minute to minute; docs/performance.md, fifteenth
-# session). Fewer instructions is not always less time: confirm a cut with
-# scripts/ab_render_time.py. Each binary takes about 15 s at the default size.
+# every run of an idle machine, so two builds can be compared where timing cannot
+# resolve a few percent (on a VM whose speed swings by 30% from minute to minute;
+# docs/performance.md, fifteenth session). With a build running beside it, one binary's
+# count rose 0.9%: compare on an idle machine. Fewer instructions is not always less
+# time: confirm a cut with scripts/ab_render_time.py. Each binary takes about 15 s at
+# the default size.
 #
 #   scripts/render_instructions.sh OLD/penumbra build/bin/penumbra
 #   scripts/render_instructions.sh build/bin/penumbra -- render scenes/glossy.gltf --width 64 --spp 16
