@@ -34,6 +34,7 @@ struct RenderContext {
           ray_cones(!scene.textures.empty()),
           media(scene),
           has_volumes(media.any()),
+          has_emission(scene_has_emission(scene)),
           prototypes(std::make_shared<const BsdfPrototypes>(scene, materials)) {
         this->materials.prototypes = prototypes.get();
     }
@@ -52,6 +53,10 @@ struct RenderContext {
     // Some material has a volume (and so possibly dispersion): without one, the path
     // tracer skips its media bookkeeping for the whole render.
     bool has_volumes = false;
+    // Some material emits (scene_has_emission). Without it and without an environment,
+    // only light samples find light (punctual lights cannot be hit), and the path tracer
+    // ends a path at its last light sample instead of tracing a ray that finds nothing.
+    bool has_emission = true;
     // Shared by copies, so that each copy's materials.prototypes stays valid.
     std::shared_ptr<const BsdfPrototypes> prototypes;
 };

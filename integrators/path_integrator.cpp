@@ -137,6 +137,12 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
             if (++passes > 256) break;
             continue;
         }
+        // The next vertex (depth max_depth) takes no light sample: the BSDF sample's ray
+        // there could only find emission. Where nothing a ray can reach emits, the path
+        // ends here with the same radiance, one ray and one shading short (as Embree's
+        // pathtracer tutorial does after its last segment).
+        if (depth + 1 >= m_options.max_depth && !ctx.has_emission && !ctx.lights.environment())
+            break;
 
         // The square first, then the lobe choice: the order GCC gave the two calls as
         // arguments (unspecified in C++), written out so every compiler draws the same.

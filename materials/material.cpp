@@ -81,6 +81,12 @@ bool scene_has_alpha(const Scene& scene) {
     return false;
 }
 
+bool scene_has_emission(const Scene& scene) {
+    for (const MaterialDesc& m : scene.materials)
+        if (m.unlit || !is_black(m.emissive * m.emissive_strength)) return true;
+    return false;
+}
+
 ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
                   const MaterialOptions& options, const PathVolume& path) {
     const MaterialDesc& m = scene.material(sp.material);

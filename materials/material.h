@@ -123,5 +123,8 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
 float surface_opacity(const Scene& scene, const SurfacePoint& sp);
 // True when some material is MASK or BLEND, so rays must test coverage.
 bool scene_has_alpha(const Scene& scene);
+// True when some material can give a hit emission (shade's sd.emission): an emissive
+// factor times strength that is not black, or KHR_materials_unlit.
+bool scene_has_emission(const Scene& scene);
 
 }  // namespace penumbra

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include "core/accel/embree_accel.h"
 #include "core/lights/point_light.h"
 #include "core/sampling/warp.h"
@@ -125,6 +127,76 @@ TEST(DirectIntegrator, ConvexBoxUnderUniformEnvironmentMatchesForAnySampleSplit)
         EXPECT_TRUE(test::within(e, a * L))
             << nl << " light, " << nb << " bsdf samples: " << e.mean << " +- " << e.std_error;
     }
+}
+
+// A closed Lambertian box lit by a point light inside it: nothing a ray can hit emits,
+// so each path ends at its last light sample instead of tracing one more ray to find
+// emission. The radiance must be the same bits as with that ray traced (a context told
+// that something emits), and the saving exactly one ray per path (Russian roulette off,
+// so every path reaches the last depth).
+TEST(PathIntegrator, EndsAtTheLastLightSampleWhereNoSurfaceOrEnvironmentEmits) {
+    TestScene s;
+    const int mat = test::add_lambertian(s.scene, Spectrum(0.7f));
+    const uint32_t cube = test::add_cube_object(s.scene, mat);
+    test::add_instance(s.scene, cube, Transform::scale({2, 3, 4}));
+    s.scene.lights.push_back(std::make_unique<PointLight>(Vec3{0.3f, 1, -0.5f}, Spectrum(10)));
+    s.accel = std::make_unique<EmbreeAccel>(s.scene);
+    s.lights = std::make_unique<LightSet>(s.scene, nullptr);
+    const RenderContext early = s.ctx();
+    ASSERT_FALSE(early.has_emission);
+    RenderContext full = s.ctx();
+    full.has_emission = true;  // as if some surface emitted: every path's last ray traced
+
+    const uint32_t spp = 16, n = 4000;
+    for (int max_depth : {1, 2, 5}) {
+        IntegratorOptions opt;
+        opt.max_depth = max_depth;
+        opt.rr_depth = 1000;
+        const PathIntegrator integrator(opt);
+        auto sampler = make_sampler(SamplerType::TabledSobol, spp, 3);
+        uint64_t rays[2] = {0, 0};
+        double sum = 0;
+        for (uint32_t i = 0; i < n; ++i) {
+            Spectrum L[2];
+            for (int k = 0; k < 2; ++k) {
+                sampler->start_pixel_sample({int(i / spp), 0}, i % spp);
+                Ray r;
+                r.o = {0.1f, -0.2f, 0.3f};
+                r.d = square_to_uniform_sphere(sampler->get_2d());
+                const uint64_t before = s.accel->rays_traced();
+                L[k] = integrator.Li(r, k == 0 ? early : full, *sampler);
+                rays[k] += s.accel->rays_traced() - before;
+            }
+            ASSERT_EQ(std::memcmp(&L[0], &L[1], sizeof(Spectrum)), 0)
+                << "max_depth " << max_depth << ", path " << i << ": " << L[0].y << " against "
+                << L[1].y;
+            sum += L[0].y;
+        }
+        EXPECT_GT(sum, 0) << "max_depth " << max_depth;  // the light reaches the walls
+        EXPECT_EQ(rays[1] - rays[0], n) << "max_depth " << max_depth;
+        // A camera ray, then a light sample and a ray per bounce, the last ray left out.
+        EXPECT_EQ(rays[0], uint64_t(n) * 2 * max_depth) << "max_depth " << max_depth;
+    }
+
+    // Emissive surfaces and environments keep the last ray: it can find their light. A
+    // convex box under an environment at depth 1: under MIS, much of the light a * L
+    // comes through that ray.
+    EXPECT_TRUE(furnace_box(1, 0.5f)->ctx().has_emission);
+    const auto env = box_in_environment(0.6f, 1.5f);
+    ASSERT_FALSE(env->ctx().has_emission);
+    IntegratorOptions one_bounce;
+    one_bounce.max_depth = 1;
+    const PathIntegrator integrator(one_bounce);
+    const test::Estimate e =
+        measure(*env, integrator, SamplerType::Stratified, {0, 0, 0}, true, 20000);
+    EXPECT_TRUE(test::within(e, 0.6f * 1.5f)) << e.mean << " +- " << e.std_error;
+    Scene unlit;
+    MaterialDesc m;
+    m.unlit = true;
+    unlit.materials.push_back(m);
+    EXPECT_TRUE(scene_has_emission(unlit));
+    unlit.materials[0].unlit = false;
+    EXPECT_FALSE(scene_has_emission(unlit));
 }
 
 TEST(PathIntegrator, MisHasLowerVarianceThanEitherStrategyAloneOnASmallLight) {
