@@ -1,7 +1,7 @@
 // Per material, the BSDF that shade() would build at every hit, built once per render
 // where nothing it depends on varies over the surface: no texture feeds it, no vertex
 // colour tints it, and the model is an opaque one (Lambertian or the glTF BRDF without
-// layers, films or anisotropy). shade() then copies the model instead of working out
+// layers, films or anisotropy). shade() then refers to the model instead of working out
 // its parameters and constructing it (the albedo-table row, the layer's E_avg) at each
 // hit: on scenes/glossy.gltf that work was about 7% of the render (issue 14).
 #pragma once

@@ -1,6 +1,7 @@
 #include "materials/metal_rough_bsdf.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 
@@ -10,6 +11,15 @@
 namespace penumbra {
 
 namespace {
+
+// Unique without a shared counter per model: a thread takes a block of 2^40 numbers once
+// (hits on textured materials build a model each, on both threads at once).
+uint64_t new_model_id() {
+    static std::atomic<uint64_t> threads{0};
+    thread_local const uint64_t base = (threads.fetch_add(1, std::memory_order_relaxed) + 1) << 40;
+    thread_local uint64_t count = 0;
+    return base + ++count;
+}
 
 // Both alphas of the lobe: KHR_materials_anisotropy stretches it along x. Anisotropic
 // lobes are GGX even under --microfacet beckmann: Beckmann's albedo table over four
@@ -70,7 +80,8 @@ MetalRoughBsdf::MetalRoughBsdf(const MetalRoughParams& p)
     : m_p(p),
       m_dist(make_distribution(p)),
       m_delta(is_delta(p)),
-      m_f0_max(max_component(p.dielectric_f0)) {
+      m_f0_max(max_component(p.dielectric_f0)),
+      m_id(new_model_id()) {
     m_aniso = !m_delta && p.anisotropy > 0;
     m_film = p.iridescence > 0 && p.film.thickness > 0;
     if (m_film) {
@@ -242,19 +253,21 @@ Spectrum MetalRoughBsdf::specular_fresnel(float c) const {
     return fd * (1 - m_p.metallic) + fm * m_p.metallic;
 }
 
-const MetalRoughBsdf::WoTerms& MetalRoughBsdf::wo_terms(Vec3 wo) const {
+thread_local MetalRoughBsdf::WoTerms MetalRoughBsdf::s_wo;
+
+MetalRoughBsdf::WoTerms MetalRoughBsdf::wo_terms(Vec3 wo) const {
+    WoTerms& c = s_wo;
     uint32_t key[3];
     std::memcpy(key, &wo, sizeof key);
-    if (m_wo.valid && key[0] == m_wo.key[0] && key[1] == m_wo.key[1] && key[2] == m_wo.key[2])
-        return m_wo;
-    std::memcpy(m_wo.key, key, sizeof key);
-    m_wo.valid = true;
+    if (c.model == m_id && key[0] == c.key[0] && key[1] == c.key[1] && key[2] == c.key[2]) return c;
+    c.model = m_id;
+    std::memcpy(c.key, key, sizeof key);
     // A metal has no base, a bare base no layer (and neither an albedo table: the
     // constructor stops before it).
-    m_wo.transmittance = m_p.metallic >= 1 || m_lambert ? 1.0f : base_transmittance(wo);
-    m_wo.probability = m_lambert ? 0.0f : specular_probability(wo, m_wo.transmittance);
-    m_wo.lambda = m_delta ? 0.0f : m_dist.lambda(wo);
-    return m_wo;
+    c.transmittance = m_p.metallic >= 1 || m_lambert ? 1.0f : base_transmittance(wo);
+    c.probability = m_lambert ? 0.0f : specular_probability(wo, c.transmittance);
+    c.lambda = m_delta ? 0.0f : m_dist.lambda(wo);
+    return c;
 }
 
 Spectrum MetalRoughBsdf::diffuse_term(const WoTerms& t, Vec3 wi, float cos_vh) const {

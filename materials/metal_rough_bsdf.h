@@ -70,13 +70,17 @@ private:
     // and eval ask again; on scenes/glossy.gltf that was 5 albedo-table lookups of
     // 1 - E(wo) and 3 Fresnel evaluations per bounce for what one gives.
     struct WoTerms {
+        uint64_t model = 0;           // the m_id of the model they are for (0: none)
         uint32_t key[3] = {0, 0, 0};  // wo's bits (an exact match; NaN never matches)
-        bool valid = false;
         float transmittance = 1;      // base_transmittance(wo), where a base exists
         float probability = 0;        // specular_probability(wo)
         float lambda = 0;             // Smith Lambda(wo) of a rough lobe
     };
-    const WoTerms& wo_terms(Vec3 wo) const;
+    // The last wo's terms are kept per thread, not in the model, so that one model can
+    // serve every thread's hits (a material's prototype, BsdfStorage::use). By value: a
+    // reference to the thread's slot would change under a caller that asked another
+    // model in between.
+    WoTerms wo_terms(Vec3 wo) const;
     // Probability of choosing the specular lobe for wo, given base_transmittance(wo).
     float specular_probability(Vec3 wo, float transmittance) const;
     // The base's BRDF value; cos_vh only matters to the spec's layering.
@@ -120,9 +124,12 @@ private:
     SpecularAlbedo m_albedo;  // AlbedoScaled, rough lobes only
     AnisotropicSpecularAlbedo m_aniso_albedo;  // the same for anisotropic lobes
     float m_base_norm = 1;    // AlbedoScaled: 1 / (1 - E_avg)
-    // The last wo's terms: filled by the first call that needs them. The object lives in
-    // one thread's ShadingData, so const methods may keep it.
-    mutable WoTerms m_wo;
+    // A number no other model has had in this process (a copy keeps its original's: it
+    // holds the same parameters), the key of the thread's cached wo terms. The address
+    // would not do: a hit's model is built where the previous hit's was, with other
+    // parameters, for the same wo (an orthographic view of a textured plane).
+    uint64_t m_id;
+    static thread_local WoTerms s_wo;  // this thread's last wo's terms, of model s_wo.model
 };
 
 }  // namespace penumbra

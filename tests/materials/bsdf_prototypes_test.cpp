@@ -6,7 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstring>
+#include <thread>
+#include <vector>
 
 #include "core/math/frame.h"
 #include "core/sampling/rng.h"
@@ -116,19 +119,17 @@ TEST(BsdfPrototypes, ShadeGivesTheSameBsdfBitForBitUnderEveryDistributionAndLaye
     }
 }
 
-// A hit shares the prototype's model itself only where the model keeps no state between
-// calls (the diffuse ones); the others keep per-call state (MetalRoughBsdf's last wo's
-// terms) and must be copied into each hit's ShadingData, or threads would overwrite one
-// another's. Copies of a ShadingData keep what they copy: the shared model, or a model
-// of their own.
-TEST(BsdfPrototypes, HitsShareOnlyStatelessModels) {
+// A hit refers to the prototype's model itself, of every kind, and copies of its
+// ShadingData keep referring to it: no model keeps state between calls
+// (MetalRoughBsdf's last wo's terms are per thread).
+TEST(BsdfPrototypes, HitsShareThePrototypesModel) {
     Scene scene;
     scene.materials = uniform_materials();
     const MaterialOptions options;
     const BsdfPrototypes prototypes(scene, options);
     MaterialOptions with = options;
     with.prototypes = &prototypes;
-    int shared = 0, copied = 0;
+    int metal_rough = 0;
     for (uint32_t mi = 0; mi < scene.materials.size(); ++mi) {
         SCOPED_TRACE("material " + std::to_string(mi));
         const BsdfStorage* proto = prototypes.find(mi, Vec4(1, 1, 1, 1), options);
@@ -138,24 +139,69 @@ TEST(BsdfPrototypes, HitsShareOnlyStatelessModels) {
         sp.ng = sp.ns = Vec3(0, 0, 1);
         const ShadingData sd = shade(scene, sp, normalize(Vec3(0.3f, 0.2f, 1)), with);
         const ShadingData copy = sd;
-        const bool stateless = dynamic_cast<const LambertianBsdf*>(proto->get()) != nullptr ||
-                               dynamic_cast<const OrenNayarBsdf*>(proto->get()) != nullptr;
-        if (stateless) {
-            ++shared;
-            EXPECT_EQ(sd.bsdf.get(), proto->get());
-            EXPECT_EQ(copy.bsdf.get(), proto->get());
-        } else {
-            ++copied;
-            EXPECT_NE(sd.bsdf.get(), proto->get());
-            EXPECT_NE(copy.bsdf.get(), sd.bsdf.get());
-            // The copy's model lies in the copy's own storage.
-            const char* base = reinterpret_cast<const char*>(&copy);
-            const char* model = reinterpret_cast<const char*>(copy.bsdf.get());
-            EXPECT_TRUE(model >= base && model < base + sizeof copy);
-        }
+        EXPECT_EQ(sd.bsdf.get(), proto->get());
+        EXPECT_EQ(copy.bsdf.get(), proto->get());
+        metal_rough += dynamic_cast<const MetalRoughBsdf*>(proto->get()) != nullptr;
     }
-    EXPECT_GT(shared, 0);
-    EXPECT_GT(copied, 0);
+    EXPECT_GT(metal_rough, 0);
+}
+
+// One shared model asked by two threads at once, each about its own directions in its
+// own order (so that each thread's wo changes from call to call as the other's does):
+// every answer the same bits as one thread's alone. Terms cached in the model, not per
+// thread, would let one thread's wo terms answer the other's questions.
+TEST(BsdfPrototypes, ASharedModelAnswersEveryThreadAsOneThreadAlone) {
+    Scene scene;
+    scene.materials = {opaque(0, 0.3f), opaque(0.5f, 0.6f)};
+    const BsdfPrototypes prototypes(scene, MaterialOptions{});
+    for (uint32_t mi = 0; mi < scene.materials.size(); ++mi) {
+        const Bsdf& bsdf = *prototypes.find(mi, Vec4(1, 1, 1, 1), MaterialOptions{})->get();
+        ASSERT_NE(dynamic_cast<const MetalRoughBsdf*>(&bsdf), nullptr);
+        struct Query {
+            Vec3 wo, wi;
+            Vec2 u;
+            float u_lobe;
+        };
+        struct Answer {
+            Spectrum f;
+            float pdf;
+            Vec3 wi;
+            Spectrum weight;
+        };
+        Rng rng(11 + mi);
+        std::vector<Query> queries(256);
+        for (Query& q : queries) {
+            q.wo = test::random_direction(rng, 0.02f, false);
+            q.wi = test::random_direction(rng, 0.02f, false);
+            q.u.x = rng.next_float();
+            q.u.y = rng.next_float();
+            q.u_lobe = rng.next_float();
+        }
+        auto answer = [&](const Query& q) {
+            Answer a{};
+            a.f = bsdf.eval_pdf(q.wo, q.wi, Transport::Radiance, &a.pdf);
+            if (const auto s = bsdf.sample(q.wo, q.u_lobe, q.u, Transport::Radiance)) {
+                a.wi = s->wi;
+                a.weight = s->weight();
+            }
+            return a;
+        };
+        std::vector<Answer> alone(queries.size());
+        for (size_t i = 0; i < queries.size(); ++i) alone[i] = answer(queries[i]);
+        std::atomic<int> wrong{0};
+        auto run = [&](size_t stride) {
+            for (int round = 0; round < 200; ++round)
+                for (size_t k = 0; k < queries.size(); ++k) {
+                    const size_t i = (k * stride + round) % queries.size();
+                    const Answer a = answer(queries[i]);
+                    if (std::memcmp(&a, &alone[i], sizeof a) != 0) ++wrong;
+                }
+        };
+        std::thread other(run, 3);
+        run(5);
+        other.join();
+        EXPECT_EQ(wrong.load(), 0) << "material " << mi;
+    }
 }
 
 TEST(BsdfPrototypes, NoneWhereATextureThePathOrTheFrameChangesTheModel) {

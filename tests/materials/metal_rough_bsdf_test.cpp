@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -355,6 +356,40 @@ TEST(MetalRoughBsdf, WhiteMirrorReflectsEverything) {
         }
         EXPECT_TRUE(is_black(bsdf.eval(wo, Vec3(-wo.x, -wo.y, wo.z), Transport::Radiance)));
     }
+}
+
+// The wo terms a thread keeps (its last wo's, per model) belong to the model that made
+// them, not to its address: a hit's model is built where the last hit's was, and may
+// be asked about the same wo (an orthographic view of a textured plane). Model b, built
+// in a's place and asked what a was asked, answers as a b built anywhere else.
+TEST(MetalRoughBsdf, AModelBuiltWhereAnotherWasDoesNotReuseItsTerms) {
+    const MetalRoughParams a = params(0, 0.5f, 0.0f), b = params(2, 0.3f, 0.5f);
+    const Vec3 wo = spherical_direction(0.6f, 0.4f), wi = spherical_direction(0.8f, 2.5f);
+    // Alive throughout, so that no model below is built where these are.
+    const MetalRoughBsdf a_model(a), b_model(b);
+    float b_pdf;
+    const Spectrum a_ref = a_model.eval(wo, wi, Transport::Radiance);
+    const Spectrum b_f = b_model.eval_pdf(wo, wi, Transport::Radiance, &b_pdf);
+    std::optional<MetalRoughBsdf> slot;
+    slot.emplace(a);
+    const void* where = &*slot;
+    float pdf;
+    const Spectrum a_f = slot->eval_pdf(wo, wi, Transport::Radiance, &pdf);
+    slot.emplace(b);
+    ASSERT_EQ(static_cast<const void*>(&*slot), where);
+    const Spectrum f = slot->eval_pdf(wo, wi, Transport::Radiance, &pdf);
+    EXPECT_EQ(a_f.x, a_ref.x);
+    EXPECT_NE(a_f.x, b_f.x);  // else the test could not tell
+    EXPECT_EQ(f.x, b_f.x);
+    EXPECT_EQ(f.y, b_f.y);
+    EXPECT_EQ(f.z, b_f.z);
+    EXPECT_EQ(pdf, b_pdf);
+    // A copy holds the same parameters, so it may share its original's terms.
+    const MetalRoughBsdf copy = *slot;
+    float copy_pdf;
+    const Spectrum copy_f = copy.eval_pdf(wo, wi, Transport::Radiance, &copy_pdf);
+    EXPECT_EQ(copy_f.x, b_f.x);
+    EXPECT_EQ(copy_pdf, b_pdf);
 }
 
 TEST(MetalRoughBsdf, NothingBelowTheHorizon) {
