@@ -68,6 +68,12 @@ Spectrum clamp01(Spectrum s) {
     return {std::clamp(s.x, 0.0f, 1.0f), std::clamp(s.y, 0.0f, 1.0f), std::clamp(s.z, 0.0f, 1.0f)};
 }
 
+// The emissive factor times its strength is not black: the one test of whether shade()
+// reads the material's emission (unlit materials aside), shared with scene_has_emission.
+inline bool has_emission_factor(const MaterialDesc& m) {
+    return !is_black(m.emissive * m.emissive_strength);
+}
+
 }  // namespace
 
 float surface_opacity(const Scene& scene, const SurfacePoint& sp) {
@@ -83,7 +89,7 @@ bool scene_has_alpha(const Scene& scene) {
 
 bool scene_has_emission(const Scene& scene) {
     for (const MaterialDesc& m : scene.materials)
-        if (m.unlit || !is_black(m.emissive * m.emissive_strength)) return true;
+        if (m.unlit || has_emission_factor(m)) return true;
     return false;
 }
 
@@ -144,7 +150,7 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     // Single-sided emitters (doubleSided false) emit from the glTF front face only. A
     // black factor leaves the emission black (emitted_radiance reads no texture then):
     // tested first, as most materials emit nothing, so that their hits skip the side test.
-    if (!is_black(m.emissive * m.emissive_strength) && emits_towards(m, front_normal(sp), wo))
+    if (has_emission_factor(m) && emits_towards(m, front_normal(sp), wo))
         sd.emission = emitted_radiance(scene, m, sp.uv0, sp.uv1, sp.uv_width);
 
     // A material that is the same at every hit has its model built already.
