@@ -61,12 +61,13 @@ Spectrum sample_light_stratified(const RenderContext& ctx, const SurfacePoint& s
     for (int i = n - 1; i > 0; --i) std::swap(perm[i], perm[rng.next_below(uint32_t(i + 1))]);
     Spectrum sum(0);
     const float inv_n = 1.0f / n;
+    const RayOrigins origins(sp);  // the n shadow rays share them
     for (int i = 0; i < n; ++i) {
         const Vec2 jitter = sampler.get_2d();
         const Vec2 u(std::min((i + jitter.x) * inv_n, 0x1.fffffep-1f),
                      std::min((perm[i] + jitter.y) * inv_n, 0x1.fffffep-1f));
-        sum += sample_chosen_light(ctx, sp, sd, wo, time, &*chosen, u, strategy,
-                                   float(n), bsdf_samples, media);
+        sum += sample_chosen_light(ctx, origins, sd, wo, time, &*chosen, u, strategy, float(n),
+                                   bsdf_samples, media);
     }
     return sum * inv_n;
 }

@@ -73,9 +73,10 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
 // sample_one_light and sample_light_stratified: a call passing its eleven arguments cost
 // about 30 instructions a vertex.
 [[gnu::always_inline]] inline Spectrum sample_chosen_light(
-    const RenderContext& ctx, const SurfacePoint& sp, const ShadingData& sd, Vec3 wo, float time,
+    const RenderContext& ctx, const RayOrigins& origins, const ShadingData& sd, Vec3 wo, float time,
     const SampledLight* chosen, Vec2 u, LightStrategy strategy, float light_samples,
     float bsdf_samples, const SideMedia& media) {
+    const SurfacePoint& sp = origins.point();
     const Light& light = *chosen->light;
     // Light-sampling estimates of non-delta lights are dropped under BSDF-only.
     if (strategy == LightStrategy::BsdfOnly && !light.is_delta()) return Spectrum(0);
@@ -95,7 +96,7 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
                                  : bsdf_eval(bsdf, wo, wi, Transport::Radiance)) *
                        bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, ls->wi);
     if (is_black(f)) return Spectrum(0);
-    const Ray shadow = spawn_ray(sp, ls->wi, ls->dist, time);
+    const Ray shadow = spawn_ray(origins, ls->wi, ls->dist, time);
     const float transparency = shadow_transmittance(ctx, shadow);
     if (!(transparency > 0)) return Spectrum(0);
     Spectrum tr(transparency);
@@ -110,12 +111,14 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
 // One light sample at the shading point, MIS-weighted against `bsdf_samples` BSDF samples
 // per `light_samples` light samples when strategy is Mis. Returns f * Li * |cos| * w / pdf,
 // times the transmittance of the medium the shadow ray starts in (media: wo's side for
-// reflection, the far side for transmission; surfaces on the way block it). Inline into
+// reflection, the far side for transmission; surfaces on the way block it).
+// `origins` holds the shading point and the origins of the rays leaving it, which the
+// vertex's continuation ray shares (RayOrigins). Inline into
 // the path tracer's loop, its one caller: the call's set-up and its eleven arguments cost
 // about 25 instructions a vertex, 1% of the render's (docs/performance.md, sixteenth
 // session).
 [[gnu::always_inline]] inline Spectrum sample_one_light(
-    const RenderContext& ctx, const SurfacePoint& sp, const ShadingData& sd, Vec3 wo, float time,
+    const RenderContext& ctx, const RayOrigins& origins, const ShadingData& sd, Vec3 wo, float time,
     PathSampler& sampler, LightStrategy strategy, float light_samples = 1, float bsdf_samples = 1,
     const SideMedia& media = {}) {
     // Where the choice allows it, the light sample's first coordinate chooses the light
@@ -125,6 +128,7 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
     // (docs/performance.md). u_light is drawn in every case, so that the sampler's
     // dimensions do not depend on the light sampler (deferred: a remapping choice does
     // not read it).
+    const SurfacePoint& sp = origins.point();
     const PathSampler::Deferred1d u_light = sampler.defer_1d();
     const Vec2 u = sampler.get_2d();
     // The remapped coordinate goes to its own float: written through a pointer into u
@@ -136,7 +140,7 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
             ? ctx.lights.sample_remapped(u.x, &u_x)
             : ctx.lights.sample(ShadingPoint{sp.p, sd.ng}, sampler.value(u_light));
     if (!chosen) return Spectrum(0);
-    return sample_chosen_light(ctx, sp, sd, wo, time, &*chosen, Vec2(u_x, u.y), strategy,
+    return sample_chosen_light(ctx, origins, sd, wo, time, &*chosen, Vec2(u_x, u.y), strategy,
                                light_samples, bsdf_samples, media);
 }
 

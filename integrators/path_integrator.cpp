@@ -125,13 +125,16 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
 
         const Bsdf& bsdf = *sd.bsdf.get();
         const Vec3 wo = sd.frame.to_local(wo_world);
+        // The light sample's shadow ray and the continuation share their origin when
+        // they leave on the same side.
+        const RayOrigins origins(sp);
         const SideMedia sides =
             kMedia ? side_media(ctx, media.stack, sp.material, sd.front_face) : SideMedia{};
         if (depth < m_options.max_depth)
-            L += clamped(beta * cover.share *
-                             sample_one_light(ctx, sp, sd, wo, ray.time, draws, strategy, 1, 1,
-                                              sides),
-                         clamp_for(depth + 1));
+            L += clamped(
+                beta * cover.share *
+                    sample_one_light(ctx, origins, sd, wo, ray.time, draws, strategy, 1, 1, sides),
+                clamp_for(depth + 1));
         if (cover.through) {
             step_through(sp, sd, ray);
             if (++passes > 256) break;
@@ -181,7 +184,7 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
             beta /= p;
         }
         const RayCone cone = bounce_cone(ray.cone, sp.cone_width, bs->pdf, bs->is_specular());
-        ray = spawn_ray(sp, wi_world, std::numeric_limits<float>::infinity(), ray.time);
+        ray = spawn_ray(origins, wi_world, std::numeric_limits<float>::infinity(), ray.time);
         ray.cone = cone;
     }
     return L;

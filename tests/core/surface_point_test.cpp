@@ -111,6 +111,37 @@ TEST(SpawnRay, ShadowRayFromALiftedOriginStopsShortOfItsTarget) {
     EXPECT_EQ(open.tmax, std::numeric_limits<float>::infinity());
 }
 
+// A vertex's shared origins (RayOrigins) give every ray the bits spawn_ray gives it
+// alone: rays on both sides of a lifted point whose shading normal is tilted from its
+// geometric one, so that the two sides' origins differ in base point and direction.
+TEST(SpawnRay, AVertexsSharedOriginsGiveEachRayItsOwnBits) {
+    SurfacePoint sp;
+    sp.p = {12.35f, -0.2f, 3.3f};
+    sp.ng = normalize(Vec3(0.1f, 1, 0.05f));
+    sp.ns = normalize(Vec3(0.4f, 1, -0.3f));
+    sp.p_smooth = sp.p + sp.ns * 1e-3f;
+    sp.p_error = Vec3(2e-6f, 1e-7f, 5e-7f);
+    const RayOrigins origins(sp);
+    int outside = 0, inside = 0;
+    for (int i = 0; i < 2000; ++i) {
+        // Directions over the whole sphere (a spiral), shadow rays and open ones.
+        const float z = 1 - (i + 0.5f) / 1000, phi = 2.39996f * i;
+        const float r = std::sqrt(std::max(0.0f, 1 - z * z));
+        const Vec3 w(r * std::cos(phi), z, r * std::sin(phi));
+        const float dist = i % 2 ? 0.7f : std::numeric_limits<float>::infinity();
+        const Ray a = spawn_ray(origins, w, dist, 0.25f), b = spawn_ray(sp, w, dist, 0.25f);
+        for (int k = 0; k < 3; ++k) {
+            ASSERT_EQ(a.o[k], b.o[k]) << i;
+            ASSERT_EQ(a.d[k], b.d[k]) << i;
+        }
+        ASSERT_EQ(a.tmax, b.tmax) << i;
+        ASSERT_EQ(a.time, b.time) << i;
+        (dot(w, sp.ns) > 0 ? outside : inside) += 1;
+    }
+    EXPECT_GT(outside, 500);
+    EXPECT_GT(inside, 500);
+}
+
 // The plane's unit normal in world space and a unit tangent.
 void plane_frame(const Scene& scene, Vec3* n, Vec3* t) {
     const Transform& xf = scene.instances[0].to_world;
