@@ -39,10 +39,9 @@ Spectrum BasicIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         const ShadingPoint ref{sp.p, sd.ng};
         for (const auto& light : scene.lights) {
             const std::optional<LightSample> ls = light->sample_Li(ref, sampler.get_2d(), ray.time);
-            if (!ls || dot(ls->wi, side_normal(sp, sd.ng)) <= 0) continue;
+            if (!ls || dot(ls->wi, sd.n_side) <= 0) continue;
             const Vec3 wi = sd.frame.to_local(ls->wi);
-            const Spectrum f = bsdf->eval(wo, wi, Transport::Radiance) *
-                               bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, ls->wi);
+            const Spectrum f = bsdf->eval(wo, wi, Transport::Radiance) * bump_shadowing(sd, ls->wi);
             if (is_black(f)) continue;
             const float transparency =
                 shadow_transmittance(ctx, spawn_ray(sp, ls->wi, ls->dist, ray.time));
@@ -62,7 +61,7 @@ Spectrum BasicIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         const std::optional<BsdfSample> bs = bsdf->sample(wo, u_lobe, u_dir, Transport::Radiance);
         if (!bs || !bs->is_specular()) break;
         const Vec3 wi_world = sd.frame.to_world(bs->wi);
-        if (dot(wi_world, side_normal(sp, sd.ng)) <= 0) break;
+        if (dot(wi_world, sd.n_side) <= 0) break;
         throughput *= bs->weight();
         if (is_black(throughput)) break;
         ray = spawn_ray(sp, wi_world, std::numeric_limits<float>::infinity(), ray.time);

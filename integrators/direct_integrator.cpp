@@ -61,7 +61,7 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
                 bsdf.sample(wo, u_lobe, u_dir, Transport::Radiance);
             if (!bs || bs->is_specular()) continue;
             const Vec3 wi_world = sd.frame.to_world(bs->wi);
-            if ((bs->wi.z > 0) != (dot(wi_world, side_normal(sp, sd.ng)) > 0)) continue;
+            if ((bs->wi.z > 0) != (dot(wi_world, sd.n_side) > 0)) continue;
             Ray r = spawn_ray(sp, wi_world, std::numeric_limits<float>::infinity(), ray.time);
             const Medium* medium = bs->wi.z > 0 ? sides.wo_side : sides.far_side;
             // Emission the ray finds, through partly covered surfaces as the light samples'
@@ -96,8 +96,7 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
                 clear *= 1 - coverage;
                 r.tmin = std::nextafter(h->t, std::numeric_limits<float>::infinity());
             }
-            L += shaded * bs->weight() * found *
-                 (1 / nb * bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, wi_world));
+            L += shaded * bs->weight() * found * (1 / nb * bump_shadowing(sd, wi_world));
         }
         if (cover.through) {
             step_through(sp, sd, ray);
@@ -113,7 +112,7 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
             bsdf.sample(wo, u_lobe, u_dir, Transport::Radiance);
         if (!specular || !specular->is_specular()) break;
         const Vec3 wi_world = sd.frame.to_world(specular->wi);
-        if ((specular->wi.z > 0) != (dot(wi_world, side_normal(sp, sd.ng)) > 0)) break;
+        if ((specular->wi.z > 0) != (dot(wi_world, sd.n_side) > 0)) break;
         beta *= specular->weight();
         if (specular->wi.z < 0)
             cross_surface(ctx, media.stack, sp.material, sd.front_face, int(sp.instance));

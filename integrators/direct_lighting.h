@@ -41,6 +41,12 @@ inline float bump_shadowing(Vec3 n_smooth, Vec3 n_bump, Vec3 wi) {
     return g > 1 - 1e-4f ? 1.0f : g * (1 + g - g * g);
 }
 
+// bump_shadowing at a hit, for light arriving along wi: exactly 1 without a normal map,
+// as the formula gives it, without its comparison of the normals at each sample.
+inline float bump_shadowing(const ShadingData& sd, Vec3 wi) {
+    return sd.bumped ? bump_shadowing(sd.n_side, sd.frame.n, wi) : 1.0f;
+}
+
 // Partial coverage (glTF alpha MASK/BLEND) at a path's hit. The surface's share of the
 // light, its coverage, is shaded there as a weight, and the path goes on straight through
 // with probability 1 - coverage, else as the surface sends it; the throughput is
@@ -86,7 +92,7 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
     const Vec3 wi = sd.frame.to_local(ls->wi);
     // The shading frame and the interpolated normal must agree on the side, or light
     // leaks (spawn_ray then keeps rays the facet's plane puts behind from leaking).
-    if ((wi.z > 0) != (dot(ls->wi, side_normal(sp, sd.ng)) > 0)) return Spectrum(0);
+    if ((wi.z > 0) != (dot(ls->wi, sd.n_side) > 0)) return Spectrum(0);
     const Bsdf& bsdf = *sd.bsdf.get();
     // The BSDF's density for the MIS weight comes with f where the weight needs it (one
     // pass over the shared terms), so only after the shadow ray is it read.
@@ -94,7 +100,7 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
     float bsdf_pdf = 0;
     const Spectrum f = (weighted ? bsdf_eval_pdf(bsdf, wo, wi, Transport::Radiance, &bsdf_pdf)
                                  : bsdf_eval(bsdf, wo, wi, Transport::Radiance)) *
-                       bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, ls->wi);
+                       bump_shadowing(sd, ls->wi);
     if (is_black(f)) return Spectrum(0);
     const Ray shadow = spawn_ray(origins, ls->wi, ls->dist, time);
     const float transparency = shadow_transmittance(ctx, shadow);

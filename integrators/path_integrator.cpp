@@ -158,9 +158,9 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         // Directions the interpolated normal puts on the other side than the lobe would
         // cross the surface (or leak): end the path there. The same test as the light
         // samples', so that MIS weighs two strategies that cover the same directions.
-        if ((bs->wi.z > 0) != (dot(wi_world, side_normal(sp, sd.ng)) > 0)) break;
+        if ((bs->wi.z > 0) != (dot(wi_world, sd.n_side) > 0)) break;
         // The same bump shadowing as the light samples' (direct_lighting.h).
-        beta *= bs->weight() * bump_shadowing(side_normal(sp, sd.ng), sd.frame.n, wi_world);
+        beta *= bs->weight() * bump_shadowing(sd, wi_world);
         // The frame faces wo: a sample below it crossed the surface, into or out of a volume.
         if (kMedia && bs->wi.z < 0)
             cross_surface(ctx, media.stack, sp.material, sd.front_face, int(sp.instance));

@@ -106,6 +106,8 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     ns = ns * side;
     sd.ng = ng;
     sd.frame = Frame::from_normal(ns);
+    sd.n_side = side_normal(sp, ng);
+    sd.bumped = !(sd.n_side == sd.frame.n);
     // KHR_materials_anisotropy turns the frame's x to the anisotropy direction.
     // The call only where there is anisotropy to align (it returns 0 for the rest).
     const float anisotropy =

@@ -69,6 +69,12 @@ class BsdfPrototypes;
 struct ShadingData {
     Frame frame;          // z = shading normal (normal-mapped), on the side of wo
     Vec3 ng;              // geometric normal, on the side of wo
+    // The interpolated normal before any normal map, on the side of wo (side_normal(sp,
+    // ng)): the normal that decides on which side a light or BSDF sample lies. Once per
+    // hit here, where every sample asked for it (four times a path vertex).
+    Vec3 n_side;
+    // frame.n differs from n_side (a normal map): light there takes bump_shadowing.
+    bool bumped = false;
     BsdfStorage bsdf;
     Spectrum emission;    // Le towards wo
     Spectrum base_color;  // for the albedo AOV and debug views
