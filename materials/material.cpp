@@ -126,8 +126,23 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
         return sd;
     }
 
-    // What only the specular lobes read (roughness, the specular colour) is finished
-    // after the Lambertian case has returned: most hits of a diffuse scene stop there.
+    // Single-sided emitters (doubleSided false) emit from the glTF front face only. A
+    // black factor leaves the emission black (emitted_radiance reads no texture then):
+    // tested first, as most materials emit nothing, so that their hits skip the side test.
+    if (has_emission_factor(m) && emits_towards(m, front_normal(sp), wo))
+        sd.emission = emitted_radiance(scene, m, sp.uv0, sp.uv1, sp.uv_width);
+
+    // A material that is the same at every hit has its model built already.
+    if (options.prototypes) {
+        if (const BsdfStorage* proto =
+                options.prototypes->find(uint32_t(sp.material), sp.color, options)) {
+            sd.bsdf.use(*proto);
+            return sd;
+        }
+    }
+
+    // What only the models built per hit read (metalness, roughness, the specular
+    // colour) is worked out after the prototypes' return: most hits stop there.
     float metallic = m.metallic, roughness = m.roughness;
     Spectrum specular_color = m.specular_color;
     float specular = m.specular;
@@ -148,21 +163,6 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
         metallic *= mr.z;
     }
     metallic = std::clamp(metallic, 0.0f, 1.0f);
-
-    // Single-sided emitters (doubleSided false) emit from the glTF front face only. A
-    // black factor leaves the emission black (emitted_radiance reads no texture then):
-    // tested first, as most materials emit nothing, so that their hits skip the side test.
-    if (has_emission_factor(m) && emits_towards(m, front_normal(sp), wo))
-        sd.emission = emitted_radiance(scene, m, sp.uv0, sp.uv1, sp.uv_width);
-
-    // A material that is the same at every hit has its model built already.
-    if (options.prototypes) {
-        if (const BsdfStorage* proto = options.prototypes->find(uint32_t(sp.material), sp.color,
-                                                                options)) {
-            sd.bsdf.use(*proto);
-            return sd;
-        }
-    }
 
     float transmission = m.transmission;
     if (transmission > 0 && m.transmission_texture.valid())
