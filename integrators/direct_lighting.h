@@ -89,11 +89,11 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
     const ShadingPoint ref{sp.p, sd.ng};
     const std::optional<LightSample> ls = sample_light_Li(light, ref, u, time);
     if (!ls || !(ls->pdf > 0)) return Spectrum(0);
-    const Vec3 wi = sd.frame.to_local(ls->wi);
+    const Bsdf& bsdf = *sd.bsdf.get();
+    const Vec3 wi = to_bsdf_local(bsdf, sd.frame, ls->wi);
     // The shading frame and the interpolated normal must agree on the side, or light
     // leaks (spawn_ray then keeps rays the facet's plane puts behind from leaking).
     if ((wi.z > 0) != (dot(ls->wi, sd.n_side) > 0)) return Spectrum(0);
-    const Bsdf& bsdf = *sd.bsdf.get();
     // The BSDF's density for the MIS weight comes with f where the weight needs it (one
     // pass over the shared terms), so only after the shadow ray is it read.
     const bool weighted = !ls->delta && strategy == LightStrategy::Mis;

@@ -124,7 +124,7 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         if (depth >= m_options.max_depth && !cover.through) break;
 
         const Bsdf& bsdf = *sd.bsdf.get();
-        const Vec3 wo = sd.frame.to_local(wo_world);
+        const Vec3 wo = to_bsdf_local(bsdf, sd.frame, wo_world);
         // The light sample's shadow ray and the continuation share their origin when
         // they leave on the same side.
         const RayOrigins origins(sp);

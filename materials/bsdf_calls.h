@@ -7,10 +7,19 @@
 
 #include <optional>
 
+#include "core/math/frame.h"
 #include "materials/bsdf.h"
 #include "materials/lambertian.h"
 
 namespace penumbra {
+
+// World direction w in the hit's shading frame, as the calls below read it. The
+// Lambertian model reads only the cosine, z, so its x and y are left 0: two dot products
+// fewer for wo and for each light sample's wi at every diffuse vertex.
+inline Vec3 to_bsdf_local(const Bsdf& bsdf, const Frame& frame, Vec3 w) {
+    if (bsdf.is_lambertian()) return {0, 0, dot(w, frame.n)};  // to_local's z, bit for bit
+    return frame.to_local(w);
+}
 
 inline Spectrum bsdf_eval(const Bsdf& bsdf, Vec3 wo, Vec3 wi, Transport mode) {
     if (bsdf.is_lambertian())

@@ -64,6 +64,50 @@ TEST(BsdfCalls, DirectCallsMatchTheVirtualOnes) {
     expect_same_as_virtual(metal_rough);
 }
 
+// to_bsdf_local: the direct calls give every model the bits they give it in the full
+// local frame, the Lambertian one (whose x and y are left 0) included, with a frame that
+// is not the identity.
+TEST(BsdfCalls, LocalDirectionsAsTheCallsReadThem) {
+    const LambertianBsdf lambert(Spectrum(0.2f, 0.5f, 0.8f));
+    MetalRoughParams p;
+    p.base_color = Spectrum(0.9f, 0.6f, 0.3f);
+    p.metallic = 0.3f;
+    p.alpha = 0.16f;
+    const MetalRoughBsdf metal_rough(p);
+    const Frame frame = Frame::from_normal(normalize(Vec3(0.3f, -0.8f, 0.52f)));
+    Rng rng(23);
+    for (const Bsdf* bsdf :
+         {static_cast<const Bsdf*>(&lambert), static_cast<const Bsdf*>(&metal_rough)}) {
+        for (int i = 0; i < 2000; ++i) {
+            const Vec3 wo_world =
+                test::spherical_direction(2 * rng.next_float() - 1, 6.28f * rng.next_float());
+            const Vec3 wi_world =
+                test::spherical_direction(2 * rng.next_float() - 1, 6.28f * rng.next_float());
+            const Vec3 wo = to_bsdf_local(*bsdf, frame, wo_world);
+            const Vec3 wi = to_bsdf_local(*bsdf, frame, wi_world);
+            const Vec3 wo_full = frame.to_local(wo_world), wi_full = frame.to_local(wi_world);
+            EXPECT_TRUE(same_bits(wo.z, wo_full.z));
+            float pdf = -1, pdf_full = -2;
+            EXPECT_TRUE(
+                same_bits(bsdf_eval_pdf(*bsdf, wo, wi, Transport::Radiance, &pdf),
+                          bsdf_eval_pdf(*bsdf, wo_full, wi_full, Transport::Radiance, &pdf_full)));
+            EXPECT_TRUE(same_bits(pdf, pdf_full));
+            const Vec2 u(rng.next_float(), rng.next_float());
+            const float u_lobe = rng.next_float();
+            const std::optional<BsdfSample> a =
+                bsdf_sample(*bsdf, wo, u_lobe, u, Transport::Radiance);
+            const std::optional<BsdfSample> b =
+                bsdf_sample(*bsdf, wo_full, u_lobe, u, Transport::Radiance);
+            ASSERT_EQ(a.has_value(), b.has_value());
+            if (a) {
+                EXPECT_TRUE(same_bits(a->wi, b->wi));
+                EXPECT_TRUE(same_bits(a->f, b->f));
+                EXPECT_TRUE(same_bits(a->pdf, b->pdf));
+            }
+        }
+    }
+}
+
 TEST(LightCalls, PointLightsAloneAreCalledDirectlyWithTheSameSample) {
     const PointLight point({0.3f, 0.9f, -0.2f}, Spectrum(2, 3, 4));
     EXPECT_TRUE(point.is_point());
