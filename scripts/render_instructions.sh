@@ -13,7 +13,8 @@
 #
 # Without `--`, the render is the point-light Cornell box at 64 px, 16 spp, box filter,
 # 8 segments, one thread. For a line-level profile, run callgrind on a build with -g and
-# read it with `callgrind_annotate --auto=yes`.
+# read it with `callgrind_annotate --auto=yes`, or by the line each inlined instruction
+# came from with scripts/inline_profile.py.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 command -v valgrind >/dev/null || { echo "needs valgrind (apt-get install valgrind)" >&2; exit 1; }
