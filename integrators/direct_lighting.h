@@ -117,12 +117,11 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
 // One light sample at the shading point, MIS-weighted against `bsdf_samples` BSDF samples
 // per `light_samples` light samples when strategy is Mis. Returns f * Li * |cos| * w / pdf,
 // times the transmittance of the medium the shadow ray starts in (media: wo's side for
-// reflection, the far side for transmission; surfaces on the way block it).
-// `origins` holds the shading point and the origins of the rays leaving it, which the
-// vertex's continuation ray shares (RayOrigins). Inline into
-// the path tracer's loop, its one caller: the call's set-up and its eleven arguments cost
-// about 25 instructions a vertex, 1% of the render's (docs/performance.md, sixteenth
-// session).
+// reflection, the far side for transmission; surfaces on the way block it). `origins`
+// holds the shading point and the origins of the rays leaving it, which the vertex's
+// continuation shares (RayOrigins). Inline into the path tracer's loop, its one caller:
+// the call's set-up and its eleven arguments cost about 25 instructions a vertex, 1% of
+// the render's (docs/performance.md, sixteenth session).
 [[gnu::always_inline]] inline Spectrum sample_one_light(
     const RenderContext& ctx, const RayOrigins& origins, const ShadingData& sd, Vec3 wo, float time,
     PathSampler& sampler, LightStrategy strategy, float light_samples = 1, float bsdf_samples = 1,
