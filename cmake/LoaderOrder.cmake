@@ -5,8 +5,8 @@
 # deep in that order. Naming those libraries in the executable's own DT_NEEDED (they are
 # loaded anyway) puts them at the front: about 0.1 s less per process, each render, each
 # Slurm task and each of ctest's test processes (docs/performance.md, twentieth session).
-# scripts/loader_order.py checks that the new order binds every symbol where the old one
-# did.
+# scripts/loader_order.py checks that no symbol moves to or from a strong definition
+# (ctest LoaderOrder).
 
 # The list's libraries as OpenImageIO loads them: a soname it does not load is skipped, so
 # a different OpenImageIO build never gains a dependency from here.

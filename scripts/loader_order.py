@@ -39,7 +39,8 @@ import subprocess
 import sys
 import tempfile
 
-LIST = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cmake", "loader_order.txt")
+LIST = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cmake",
+                    "loader_order.txt")
 
 
 # Each binding names its libraries by the paths ld.so opened: resolved once per path.
@@ -105,11 +106,12 @@ def bindings(binary):
 
 
 def exports(path, wanted):
-    """{(name, version): weak} for the references in `wanted` (name -> versions) that a definition in path
-    satisfies, as ld.so's check_match decides: a versioned reference takes that version or
-    an unversioned definition; an unversioned one takes the default (@@) version or an
-    unversioned definition, never a hidden (@) one. weak: a weak or unique definition (a
-    C++ inline function or template instance, which any library using it may export)."""
+    """{(name, version): weak} for the references in `wanted` (name -> versions) that a
+    definition in path satisfies, as ld.so's check_match decides: a versioned reference
+    takes that version or an unversioned definition; an unversioned one takes the default
+    (@@) version or an unversioned definition, never a hidden (@) one. weak: a weak or
+    unique definition (a C++ inline function or template instance, which any library
+    using it may export)."""
     out = subprocess.run(["nm", "-D", "--defined-only", path], capture_output=True,
                          text=True).stdout
     versions = collections.defaultdict(dict)  # name -> {"" | "@V" | "@@V": weak}
@@ -171,8 +173,9 @@ def main():
             print("%9d lookups-deep  %6d bindings  position %3d  %s"
                   % (by_lib[p] * i, by_lib[p], i, n))
         return 0
-    # The winner of each bound symbol in the default order. The executable's references bind once past it (copy relocations, whose search skips
-    # the executable) and once to itself (to the copy): either answer is the order's.
+    # The winner of each bound symbol in the default order. The executable's references
+    # bind once past it (copy relocations, whose search skips the executable) and once to
+    # itself (to the copy): either answer is the order's.
     exe = real(args.binary)
     wanted = collections.defaultdict(set)  # name -> the versions asked for
     for _, (name, version), _ in binds:
