@@ -12,6 +12,10 @@ class DirectIntegrator final : public Integrator {
 public:
     explicit DirectIntegrator(const IntegratorOptions& options) : m_options(options) {}
     Spectrum Li(const Ray& ray, const RenderContext& ctx, Sampler& sampler) const override;
+    // With both kinds of samples, Li weighs them by MIS at every surface.
+    bool pairs_light_and_bsdf_samples() const override {
+        return m_options.light_samples > 0 && m_options.bsdf_samples > 0;
+    }
 
 private:
     IntegratorOptions m_options;

@@ -97,6 +97,10 @@ public:
     }
     // Whether Li_from_hit uses the hit (only then does the loop trace camera packets).
     virtual bool uses_first_hit() const { return false; }
+    // Whether every light sample it takes of a non-delta light is MIS-weighted against a
+    // BSDF sample that can reach the same directions: then the environment may leave
+    // its dimmer directions to the BSDF samples (EnvironmentSampling::MisCompensated).
+    virtual bool pairs_light_and_bsdf_samples() const { return false; }
 };
 
 // Names accepted by make_integrator, with one-line descriptions (for --help).

@@ -16,6 +16,11 @@ public:
     Spectrum Li_from_hit(const Ray& ray, const std::optional<Hit>& hit, const RenderContext& ctx,
                          Sampler& sampler) const override;
     bool uses_first_hit() const override { return true; }
+    // Under MIS every vertex that samples a light also samples its BSDF, and the ray of
+    // that sample finds the environment's light with the MIS weight.
+    bool pairs_light_and_bsdf_samples() const override {
+        return m_options.strategy == LightStrategy::Mis;
+    }
 
 private:
     // The path loop; first_hit: the camera ray's closest hit when traced already (nullptr:

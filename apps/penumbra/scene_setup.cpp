@@ -178,12 +178,13 @@ float scene_radius(const Scene& scene) {
 // Environment images and colours are taken as linear Rec.709, like glTF's colours.
 std::unique_ptr<EnvironmentLight> make_environment(const RenderCommandOptions& o,
                                                    const Scene& scene,
-                                                   const Mat3& rec709_to_working) {
+                                                   const Mat3& rec709_to_working,
+                                                   EnvironmentSampling sampling) {
     if (!o.env.empty()) {
         Image img = read_image(o.env, ImageEncoding::Linear);
         convert_image_colors(img, rec709_to_working);
-        return std::make_unique<EnvironmentLight>(std::move(img), o.env_intensity,
-                                                  o.env_rotation, scene_radius(scene));
+        return std::make_unique<EnvironmentLight>(std::move(img), o.env_intensity, o.env_rotation,
+                                                  scene_radius(scene), sampling);
     }
     if (o.env_color.size() == 3)
         return std::make_unique<EnvironmentLight>(
@@ -284,8 +285,20 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     s->height = o.height ? o.height : std::max(1, int(std::lround(s->width / aspect)));
     s->camera_desc = file_cam ? *file_cam : default_camera(scene.bounds(), aspect);
     if (!file_cam) LOG_INFO(path << ": no camera in the file; using one that frames the scene");
-    std::unique_ptr<EnvironmentLight> env =
-        make_environment(o, scene, s->color->rec709_to_working());
+    IntegratorOptions iopt;
+    iopt.max_depth = o.max_depth;
+    iopt.strategy = parse_light_strategy(o.strategy);
+    iopt.light_samples = o.light_samples;
+    iopt.bsdf_samples = o.bsdf_samples;
+    iopt.clamp_direct = o.clamp_direct;
+    iopt.clamp_indirect = o.clamp_indirect;
+    iopt.regularize_roughness = o.regularize;
+    // Made before the lights: how the environment is sampled depends on it.
+    s->integrator = make_integrator(o.integrator, iopt);
+    std::unique_ptr<EnvironmentLight> env = make_environment(
+        o, scene, s->color->rec709_to_working(),
+        s->integrator->pairs_light_and_bsdf_samples() ? EnvironmentSampling::MisCompensated
+                                                      : EnvironmentSampling::Full);
     DefaultLightMode mode = DefaultLightMode::Auto;
     try {
         mode = parse_default_light_mode(o.default_light);
@@ -331,15 +344,6 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
 
     apply_lens_options(o, path, s->width, s->height, *s->accel, s->camera_desc);
 
-    IntegratorOptions iopt;
-    iopt.max_depth = o.max_depth;
-    iopt.strategy = parse_light_strategy(o.strategy);
-    iopt.light_samples = o.light_samples;
-    iopt.bsdf_samples = o.bsdf_samples;
-    iopt.clamp_direct = o.clamp_direct;
-    iopt.clamp_indirect = o.clamp_indirect;
-    iopt.regularize_roughness = o.regularize;
-    s->integrator = make_integrator(o.integrator, iopt);
     s->camera = make_camera(s->camera_desc, s->width, s->height);
     s->materials.gltf_distribution =
         o.microfacet == "beckmann" ? MicrofacetType::Beckmann : MicrofacetType::Ggx;

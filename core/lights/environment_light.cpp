@@ -12,7 +12,7 @@ EnvironmentLight::EnvironmentLight(Spectrum radiance, float scene_radius)
     : m_constant(radiance), m_radius(scene_radius) {}
 
 EnvironmentLight::EnvironmentLight(Image image, float intensity, float rotation_degrees,
-                                   float scene_radius)
+                                   float scene_radius, EnvironmentSampling sampling)
     : m_image(std::move(image)), m_scale(intensity), m_radius(scene_radius) {
     const float r = rotation_degrees * kPi / 180.0f;
     m_cos_rot = std::cos(r);
@@ -22,12 +22,31 @@ EnvironmentLight::EnvironmentLight(Image image, float intensity, float rotation_
     m_radiance.resize(size_t(w) * h);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) m_radiance[size_t(y) * w + x] = m_image.rgba(x, y).xyz() * m_scale;
+    std::vector<float> sin_theta(size_t(h), 0.0f);
+    double weighted = 0, weights = 0;  // for the mean luminance over the sphere
     for (int y = 0; y < h; ++y) {
-        const float sin_theta = std::sin(kPi * (y + 0.5f) / h);
-        for (int x = 0; x < w; ++x)
-            func[size_t(y) * w + x] = luminance(m_image.rgba(x, y).xyz()) * sin_theta;
+        sin_theta[y] = std::sin(kPi * (y + 0.5f) / h);
+        for (int x = 0; x < w; ++x) {
+            func[size_t(y) * w + x] = luminance(m_image.rgba(x, y).xyz()) * sin_theta[y];
+            weighted += func[size_t(y) * w + x];
+        }
+        weights += double(sin_theta[y]) * w;
     }
     m_dist = Distribution2D(func, w, h);
+    m_luminance_integral = m_dist.integral();
+    if (sampling != EnvironmentSampling::MisCompensated || !(weights > 0)) return;
+    const float mean = float(weighted / weights);
+    bool any = false;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float& f = func[size_t(y) * w + x];
+            const float above = luminance(m_image.rgba(x, y).xyz()) - mean;
+            f = above > 0 ? above * sin_theta[y] : 0.0f;
+            any = any || f > 0;
+        }
+    if (!any) return;  // a constant map: nothing above its mean
+    m_dist = Distribution2D(func, w, h);
+    m_sampling = EnvironmentSampling::MisCompensated;
 }
 
 Vec2 EnvironmentLight::direction_to_uv(Vec3 w) const {
@@ -113,7 +132,7 @@ float EnvironmentLight::power() const {
     } else {
         // The distribution's integral is the mean of luminance * sin(theta) over the
         // image; dividing by the mean of sin(theta) (2/pi) gives mean radiance.
-        mean = m_scale * m_dist.integral() / (2 * kInvPi);
+        mean = m_scale * m_luminance_integral / (2 * kInvPi);
     }
     return kPi * m_radius * m_radius * 4 * kPi * mean;
 }

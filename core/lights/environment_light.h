@@ -13,12 +13,25 @@
 
 namespace penumbra {
 
+// Which distribution an image environment's light samples follow. Full: the image's
+// luminance. MisCompensated (Karlik et al. 2019, "MIS Compensation"; pbrt-v4's
+// allowIncompletePDF): luminance less its mean over the sphere, clamped at 0, so that no
+// light sample goes to texels dimmer than the mean. BSDF sampling finds those as well
+// as light sampling did, and MIS then gives it their whole weight: with the sun-lit sky
+// of the efficiency harness, FlightHelmet's relMSE fell to 0.66x at equal samples
+// (docs/performance.md). Only for integrators whose every light sample is MIS-weighted
+// against a BSDF sample (Integrator::pairs_light_and_bsdf_samples): a light sample
+// alone would never see those texels. A map that is constant gives no compensated
+// distribution and keeps the full one.
+enum class EnvironmentSampling { Full, MisCompensated };
+
 class EnvironmentLight final : public Light {
 public:
     // Constant radiance in every direction.
     EnvironmentLight(Spectrum radiance, float scene_radius);
     // Equirectangular image (linear RGB), scaled by intensity, rotated by degrees about +Y.
-    EnvironmentLight(Image image, float intensity, float rotation_degrees, float scene_radius);
+    EnvironmentLight(Image image, float intensity, float rotation_degrees, float scene_radius,
+                     EnvironmentSampling sampling = EnvironmentSampling::Full);
 
     std::optional<LightSample> sample_Li(const ShadingPoint& ref, Vec2 u,
                                          float time) const override;
@@ -31,6 +44,9 @@ public:
     // Le(w) and pdf_Li's density for w from one mapping of w to the image: a BSDF-sampled
     // ray that escapes needs both, and the mapping (two atan2) is most of either.
     Spectrum Le(Vec3 w, float* pdf) const;
+
+    // MisCompensated only where it was asked for and the map is not constant.
+    EnvironmentSampling sampling() const { return m_sampling; }
 
     Vec2 direction_to_uv(Vec3 w) const;
     Vec3 uv_to_direction(Vec2 uv) const;
@@ -48,7 +64,11 @@ private:
     float m_scale = 1;
     float m_cos_rot = 1, m_sin_rot = 0;
     float m_radius;
-    Distribution2D m_dist;
+    Distribution2D m_dist;  // what sample_Li and pdf_Li follow
+    // The full distribution's integral (mean luminance times sin(theta)): the light's
+    // power, which the light set chooses lights by, whichever distribution samples it.
+    float m_luminance_integral = 0;
+    EnvironmentSampling m_sampling = EnvironmentSampling::Full;
 };
 
 }  // namespace penumbra
