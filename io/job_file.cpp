@@ -25,15 +25,54 @@ public:
         : m_object(object), m_where(std::move(where)), m_base(base) {}
 
     void read(JobSettings& s) const {
-        static const char* const kKeys[] = {
-            "scene",  "camera", "variant", "integrator", "strategy", "sampler", "filter",  "accel",
-            "output", "out_dir", "name",      "frames",   "width",   "height",  "max_depth",
-            "frame",  "spp",    "seed",       "time",     "time_limit", "fps",
-            "shutter", "shutter_open", "shutter_close", "ocio_config", "working_space",
-            "output_colorspace", "display", "view", "look", "aov", "half", "compression",
-            "light_units", "default_light", "exposure", "strict", "max_texture_pixels",
-            "target_error", "adaptive_min_spp", "clamp_direct", "clamp_indirect", "regularize",
-            "bands", "frames_per_task", "light_sampler", "triangle_sampling"};
+        static const char* const kKeys[] = {"scene",
+                                            "camera",
+                                            "variant",
+                                            "integrator",
+                                            "strategy",
+                                            "sampler",
+                                            "filter",
+                                            "accel",
+                                            "output",
+                                            "out_dir",
+                                            "name",
+                                            "frames",
+                                            "width",
+                                            "height",
+                                            "max_depth",
+                                            "frame",
+                                            "spp",
+                                            "seed",
+                                            "time",
+                                            "time_limit",
+                                            "fps",
+                                            "shutter",
+                                            "shutter_open",
+                                            "shutter_close",
+                                            "ocio_config",
+                                            "working_space",
+                                            "output_colorspace",
+                                            "display",
+                                            "view",
+                                            "look",
+                                            "aov",
+                                            "half",
+                                            "compression",
+                                            "light_units",
+                                            "default_light",
+                                            "exposure",
+                                            "strict",
+                                            "max_texture_pixels",
+                                            "target_error",
+                                            "adaptive_min_spp",
+                                            "clamp_direct",
+                                            "clamp_indirect",
+                                            "regularize",
+                                            "bands",
+                                            "frames_per_task",
+                                            "light_sampler",
+                                            "triangle_sampling",
+                                            "env_sampling"};
         for (const auto& [key, value] : m_object.items()) {
             bool known = false;
             for (const char* k : kKeys) known = known || key == k;
@@ -101,6 +140,7 @@ public:
         choice("default_light", s.default_light, {"auto", "on", "off"});
         choice("light_sampler", s.light_sampler, {"uniform", "power", "bvh", "auto"});
         choice("triangle_sampling", s.triangle_sampling, {"area", "solid-angle"});
+        choice("env_sampling", s.env_sampling, {"auto", "full", "compensated"});
         number("exposure", s.exposure, false);
         if (s.exposure && std::abs(*s.exposure) > 64)
             fail("exposure", "expected stops in [-64, 64]");

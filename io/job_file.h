@@ -14,7 +14,8 @@ namespace penumbra {
 // Relative paths (scene, output, out_dir) are resolved against the job file's folder.
 struct JobSettings {
     std::optional<std::string> camera, variant, integrator, strategy, sampler, filter, accel;
-    std::optional<std::string> light_sampler, triangle_sampling;  // as --light-sampler, ...
+    // as --light-sampler, --triangle-sampling, --env-sampling
+    std::optional<std::string> light_sampler, triangle_sampling, env_sampling;
     std::optional<std::string> output, out_dir, name, frames;
     std::optional<int> width, height, max_depth, frame;
     // `penumbra farm`: split each image into this many row bands, one farm task each

@@ -30,6 +30,7 @@ void apply(const JobSettings& s, RenderCommandOptions& o) {
     if (s.strategy) o.strategy = *s.strategy;
     if (s.light_sampler) o.light_sampler = *s.light_sampler;
     if (s.triangle_sampling) o.triangle_sampling = *s.triangle_sampling;
+    if (s.env_sampling) o.env_sampling = *s.env_sampling;
     if (s.sampler) o.sampler = *s.sampler;
     if (s.filter) o.filter = *s.filter;
     if (s.accel) o.accel = *s.accel;

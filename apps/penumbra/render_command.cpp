@@ -198,6 +198,8 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
         {"penumbra:strategy", o.strategy},
         {"penumbra:light_sampler", o.light_sampler},
         {"penumbra:triangle_sampling", o.triangle_sampling},
+        // What the environment's light samples followed (none without an environment).
+        {"penumbra:env_sampling", environment_sampling_name(setup->lights->environment())},
         {"penumbra:microfacet", o.microfacet},
         {"penumbra:gltf_layering", o.gltf_layering},
         {"penumbra:max_depth", std::to_string(o.max_depth)},

@@ -36,6 +36,7 @@ struct RenderCommandOptions {
     std::string strategy = "mis";
     std::string light_sampler = "auto";      // uniform | power | bvh | auto
     std::string triangle_sampling = "area";  // area | solid-angle
+    std::string env_sampling = "auto";       // auto | full | compensated
     std::string microfacet = "ggx";  // glTF specular lobes: ggx | beckmann
     std::string gltf_layering = "albedo-scaled";  // glTF diffuse base: albedo-scaled | spec
     int light_samples = 1, bsdf_samples = 1;

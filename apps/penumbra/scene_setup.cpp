@@ -112,6 +112,13 @@ void add_image_options(CLI::App* cmd, RenderCommandOptions& o) {
     cmd->add_option("--env-rotation", o.env_rotation,
                     "Rotation of the environment image about +Y, in degrees")
         ->capture_default_str();
+    cmd->add_option("--env-sampling", o.env_sampling,
+                    "Environment image's light samples: full (by luminance), compensated "
+                    "(luminance above the map's mean: the BSDF samples MIS pairs them with "
+                    "find the rest; needs such pairs) or auto (compensated where the "
+                    "integrator pairs them)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"auto", "full", "compensated"}));
     auto* aperture = cmd->add_option("--aperture-radius", o.aperture_radius,
                                      "Depth of field: lens aperture radius in scene units "
                                      "(0: pinhole, whatever the file says)")
@@ -295,10 +302,17 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     iopt.regularize_roughness = o.regularize;
     // Made before the lights: how the environment is sampled depends on it.
     s->integrator = make_integrator(o.integrator, iopt);
+    const bool paired = s->integrator->pairs_light_and_bsdf_samples();
+    if (o.env_sampling == "compensated" && !paired)
+        throw SceneError(path +
+                         ": --env-sampling compensated needs every light sample paired "
+                         "with a BSDF sample by MIS (--integrator path with "
+                         "--strategy mis, or direct with light and BSDF samples); "
+                         "the image would be too dark otherwise");
+    const bool compensate = o.env_sampling == "compensated" || (o.env_sampling == "auto" && paired);
     std::unique_ptr<EnvironmentLight> env = make_environment(
         o, scene, s->color->rec709_to_working(),
-        s->integrator->pairs_light_and_bsdf_samples() ? EnvironmentSampling::MisCompensated
-                                                      : EnvironmentSampling::Full);
+        compensate ? EnvironmentSampling::MisCompensated : EnvironmentSampling::Full);
     DefaultLightMode mode = DefaultLightMode::Auto;
     try {
         mode = parse_default_light_mode(o.default_light);

@@ -49,6 +49,11 @@ EnvironmentLight::EnvironmentLight(Image image, float intensity, float rotation_
     m_sampling = EnvironmentSampling::MisCompensated;
 }
 
+const char* environment_sampling_name(const EnvironmentLight* env) {
+    if (!env) return "none";
+    return env->sampling() == EnvironmentSampling::MisCompensated ? "compensated" : "full";
+}
+
 Vec2 EnvironmentLight::direction_to_uv(Vec3 w) const {
     // Undo the rotation about +Y.
     const float x = m_cos_rot * w.x - m_sin_rot * w.z;

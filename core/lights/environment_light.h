@@ -25,6 +25,11 @@ namespace penumbra {
 // distribution and keeps the full one.
 enum class EnvironmentSampling { Full, MisCompensated };
 
+class EnvironmentLight;
+// "full" or "compensated" as the light samples (a constant environment's are uniform:
+// "full"), "none" for no environment: the EXR header's penumbra:env_sampling.
+const char* environment_sampling_name(const EnvironmentLight* env);
+
 class EnvironmentLight final : public Light {
 public:
     // Constant radiance in every direction.

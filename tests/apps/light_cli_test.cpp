@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <numeric>
 
@@ -182,6 +183,55 @@ TEST(LightCli, JobFileKeysReachTheRender) {
     EXPECT_EQ(e.spec.get_string_attribute("penumbra:default_light"), "on");
     EXPECT_EQ(e.spec.get_string_attribute("penumbra:default_lights_added"), "1");
     EXPECT_FLOAT_EQ(e.spec.get_float_attribute("penumbra:exposure", 0), -1.0f);
+}
+
+// A 16 x 8 equirectangular sky (a bright top row over grey) written as EXR in dir.
+std::string small_sky(const test::ScratchDir& dir) {
+    const std::string path = dir.file("sky.exr");
+    std::vector<float> rgb(16 * 8 * 3, 0.3f);
+    for (int i = 0; i < 16 * 3; ++i) rgb[i] = 4.0f;
+    std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
+    EXPECT_TRUE(out);
+    if (!out) return path;
+    EXPECT_TRUE(out->open(path, OIIO::ImageSpec(16, 8, 3, OIIO::TypeDesc::FLOAT)));
+    EXPECT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, rgb.data()));
+    out->close();
+    return path;
+}
+
+// --env-sampling: auto compensates under the path tracer's MIS and not under the basic
+// integrator, the header says which, compensated without MIS pairs is refused before any
+// output is written, and the job-file key reaches the render.
+TEST(LightCli, EnvSamplingFollowsTheIntegratorAndIsRecorded) {
+    const test::ScratchDir dir;
+    const std::string scene = test::source_path("scenes/cornell-box-point.gltf");
+    const std::string sky = small_sky(dir);
+    auto sampling = [&](const std::string& name, const Args& more) {
+        const test::CliResult r = render(scene, dir.file(name), more);
+        EXPECT_EQ(r.status, 0) << r.output;
+        return read_exr(dir.file(name)).spec.get_string_attribute("penumbra:env_sampling");
+    };
+    EXPECT_EQ(sampling("auto.exr", {"--env", sky}), "compensated");
+    EXPECT_EQ(sampling("full.exr", {"--env", sky, "--env-sampling", "full"}), "full");
+    EXPECT_EQ(sampling("basic.exr", {"--env", sky, "--integrator", "basic"}), "full");
+    EXPECT_EQ(sampling("light.exr", {"--env", sky, "--strategy", "light"}), "full");
+    EXPECT_EQ(sampling("none.exr", {"--default-light", "off"}), "none");
+
+    const test::CliResult bad =
+        render(scene, dir.file("bad.exr"),
+               {"--env", sky, "--integrator", "basic", "--env-sampling", "compensated"});
+    EXPECT_NE(bad.status, 0);
+    EXPECT_NE(bad.output.find("--env-sampling compensated needs"), std::string::npos) << bad.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("bad.exr")));
+
+    const std::string job =
+        dir.write("job.json", R"({"jobs": [{"scene": ")" + scene +
+                                  R"(", "env_sampling": "full", "output": "j.exr"}]})");
+    const test::CliResult r = test::run_penumbra({"render", "--job", job, "--env", sky, "--spp",
+                                                  "1", "--width", "16", "--no-preview", "-q"});
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(read_exr(dir.file("j.exr")).spec.get_string_attribute("penumbra:env_sampling"),
+              "full");
 }
 
 }  // namespace

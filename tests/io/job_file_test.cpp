@@ -119,10 +119,12 @@ TEST(JobFile, LightKeys) {
     const JobFile f = parse_job_file(
         R"({"defaults": {"light_units": "radiometric", "exposure": 1.5, "light_sampler": "power"},
             "jobs": [{"scene": "a.gltf", "default_light": "off", "exposure": -2,
-                      "triangle_sampling": "area"}]})",
+                      "triangle_sampling": "area", "env_sampling": "full"}]})",
         "/jobs/j.json");
     EXPECT_EQ(f.defaults.light_sampler, "power");
     EXPECT_EQ(f.jobs[0].settings.triangle_sampling, "area");
+    EXPECT_EQ(f.jobs[0].settings.env_sampling, "full");
+    EXPECT_FALSE(f.defaults.env_sampling);
     EXPECT_EQ(f.defaults.light_units, "radiometric");
     EXPECT_EQ(f.defaults.exposure, 1.5);
     EXPECT_FALSE(f.defaults.default_light);
@@ -140,7 +142,9 @@ TEST(JobFile, LightKeys) {
         {R"("light_sampler": "tree")",
          "j.json: jobs[0].light_sampler: 'tree' is not one of: uniform, power, bvh, auto"},
         {R"("triangle_sampling": "sphere")",
-         "j.json: jobs[0].triangle_sampling: 'sphere' is not one of: area, solid-angle"}};
+         "j.json: jobs[0].triangle_sampling: 'sphere' is not one of: area, solid-angle"},
+        {R"("env_sampling": "mis")",
+         "j.json: jobs[0].env_sampling: 'mis' is not one of: auto, full, compensated"}};
     for (const auto& [member, message] : bad) {
         try {
             parse_job_file(std::string(R"({"jobs": [{"scene": "a.gltf", )") + member + "}]}",
