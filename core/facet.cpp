@@ -14,6 +14,10 @@ Facet make_facet(const TriangleMesh& mesh, const Transform& xf, uint32_t prim) {
         f.flags |= Facet::kFlat;
         if (dot(mesh.normals[i0], face) < 0) f.flags |= Facet::kOpposed;
     }
+    const bool shading_is_ng = mesh.normals.empty() || (f.flags & Facet::kFlat);
+    if ((f.flags & Facet::kNormal) && shading_is_ng && mesh.uv0.empty() && mesh.uv1.empty() &&
+        mesh.tangents.empty() && mesh.colors.empty())
+        f.flags |= Facet::kBare;
     return f;
 }
 

@@ -17,7 +17,7 @@ namespace penumbra {
 // 16 bytes per triangle and placement.
 struct Facet {
     Vec3 ng;             // world_face_normal's unit normal (valid when kNormal is set)
-    uint32_t flags = 0;  // kNormal | kFlat | kOpposed
+    uint32_t flags = 0;  // kNormal | kFlat | kOpposed | kBare
 
     // The triangle has a geometric normal (not degenerate): ng holds it. Without it the
     // hit takes the ray's reversed direction, which no table can hold.
@@ -27,6 +27,11 @@ struct Facet {
     // Flat, with the vertex normal against the face normal (a winding the file's normals
     // contradict): the shading normal is -ng.
     static constexpr uint32_t kOpposed = 4;
+    // The hit needs nothing of the mesh but its positions: it has a normal, its shading
+    // normal is +-ng (flat, or the mesh has no normals), and the mesh has no UVs, tangents
+    // or colours. make_surface_point takes a path for these that reads and writes only
+    // that: the common facet of untextured scenes (a Cornell box's walls).
+    static constexpr uint32_t kBare = 8;
 };
 static_assert(sizeof(Facet) == 16, "the table's cost per triangle is stated as 16 bytes");
 

@@ -16,7 +16,7 @@ constexpr float gamma(int n) { return rounding_gamma(n); }
 Vec3 abs(Vec3 v) { return {std::abs(v.x), std::abs(v.y), std::abs(v.z)}; }
 
 // Error of xf.point(q) when q carries q_err (pbrt-v4, section 6.8.6).
-Vec3 point_error(const Transform& xf, Vec3 q, Vec3 q_err) {
+[[gnu::always_inline]] inline Vec3 point_error(const Transform& xf, Vec3 q, Vec3 q_err) {
     const Mat4& m = xf.matrix();
     float e[3];
     if (xf.is_translation_only()) {
@@ -64,6 +64,9 @@ void set_uv_widths(const TriangleMesh& mesh, const Transform& xf, const Ray& ray
 // local and the record built once at the end: a SurfacePoint declared first would be
 // zero-filled (its default member initializers, a `rep stos` of 120 bytes per hit) and
 // then overwritten.
+// kBare: the hit's facet has Facet::kBare, and every branch on what the mesh lacks is
+// decided at compile time (the same arithmetic, so the same bits).
+template <bool kBare>
 [[gnu::always_inline]] inline SurfacePoint surface_point_on(const TriangleMesh& mesh,
                                                             const Transform& xf, const Ray& ray,
                                                             const Hit& hit) {
@@ -75,7 +78,7 @@ void set_uv_widths(const TriangleMesh& mesh, const Transform& xf, const Ray& ray
 
     // The surface where it was at the ray's time (motion.h: the static data when the
     // mesh does not deform).
-    const bool deforms = !mesh.motion_positions.empty();
+    const bool deforms = !kBare && !mesh.motion_positions.empty();  // a facet: static
     const Vec3 p0 = deforms ? position_at(mesh, i0, ray.time) : mesh.positions[i0],
                p1 = deforms ? position_at(mesh, i1, ray.time) : mesh.positions[i1],
                p2 = deforms ? position_at(mesh, i2, ray.time) : mesh.positions[i2];
@@ -93,8 +96,8 @@ void set_uv_widths(const TriangleMesh& mesh, const Transform& xf, const Ray& ray
     const Facet* facet = hit.facet;
     Vec3 face, ng;
     bool has_ng;
-    if (facet) {
-        has_ng = (facet->flags & Facet::kNormal) != 0;
+    if (kBare || facet) {
+        has_ng = kBare || (facet->flags & Facet::kNormal) != 0;
         ng = facet->ng;
     } else {
         face = cross(e1(), e2());
@@ -104,7 +107,9 @@ void set_uv_widths(const TriangleMesh& mesh, const Transform& xf, const Ray& ray
 
     Vec3 ns = ng;
     Vec3 p_smooth = p;
-    if (facet && has_ng && (facet->flags & Facet::kFlat)) {
+    if (kBare) {
+        if (facet->flags & Facet::kOpposed) ns = -ng;
+    } else if (facet && has_ng && (facet->flags & Facet::kFlat)) {
         // A flat facet's shading normal is ng on n0's side (is_flat_facet): no vertex
         // normal to read, transform and normalize at each hit.
         if (facet->flags & Facet::kOpposed) ns = -ng;
@@ -145,12 +150,13 @@ void set_uv_widths(const TriangleMesh& mesh, const Transform& xf, const Ray& ray
     }
     // The winding defines ng, but files are not always consistent with their normals:
     // trust the shading normals for which side is "outside".
-    const bool ng_is_front = !(dot(ng, ns) < 0);
+    // (A bare facet's ns is +-ng, unit: the dot is +-1, and the flag says which.)
+    const bool ng_is_front = kBare ? !(facet->flags & Facet::kOpposed) : !(dot(ng, ns) < 0);
     if (!ng_is_front) ng = -ng;
 
     Vec2 uv0, uv1;
     Vec3 dpdu;
-    if (!mesh.uv0.empty()) {
+    if (!kBare && !mesh.uv0.empty()) {
         const Vec2 t0 = mesh.uv0[i0], t1 = mesh.uv0[i1], t2 = mesh.uv0[i2];
         uv0 = t0 * b0 + t1 * b1 + t2 * b2;
         // dp/du from the triangle's UV parameterization (for tangent frames).
@@ -158,21 +164,23 @@ void set_uv_widths(const TriangleMesh& mesh, const Transform& xf, const Ray& ray
         const float det = d1.x * d2.y - d1.y * d2.x;
         if (std::abs(det) > 1e-20f) dpdu = xf.vector((e1() * d2.y - e2() * d1.y) / det);
     }
-    if (!mesh.uv1.empty()) uv1 = mesh.uv1[i0] * b0 + mesh.uv1[i1] * b1 + mesh.uv1[i2] * b2;
+    if (!kBare && !mesh.uv1.empty())
+        uv1 = mesh.uv1[i0] * b0 + mesh.uv1[i1] * b1 + mesh.uv1[i2] * b2;
     Vec4 tangent;
-    if (!mesh.tangents.empty()) {
+    if (!kBare && !mesh.tangents.empty()) {
         const Vec4 t = mesh.tangents[i0] * b0 + mesh.tangents[i1] * b1 + mesh.tangents[i2] * b2;
         tangent = Vec4(xf.vector(t.xyz()), mesh.tangents[i0].w < 0 ? -1.0f : 1.0f);
         if (xf.swaps_handedness()) tangent.w = -tangent.w;
     }
-    const Vec4 color = mesh.colors.empty()
+    const Vec4 color = kBare || mesh.colors.empty()
                            ? Vec4(1, 1, 1, 1)
                            : mesh.colors[i0] * b0 + mesh.colors[i1] * b1 + mesh.colors[i2] * b2;
     float cone_width = 0, uv_width[2] = {0, 0};
     if (ray.cone.active()) {
         const float dlen = length(ray.d);
         cone_width = ray.cone.width_at(hit.t * dlen);
-        set_uv_widths(mesh, xf, ray, ng, idx, e1(), e2(), cone_width, dlen, uv_width);
+        if (!kBare)  // no UV set to give a width in
+            set_uv_widths(mesh, xf, ray, ng, idx, e1(), e2(), cone_width, dlen, uv_width);
     }
     return SurfacePoint{
         p,     p_smooth, p_error,      ng,       ng_is_front, ns,
@@ -185,7 +193,14 @@ void set_uv_widths(const TriangleMesh& mesh, const Transform& xf, const Ray& ray
 // (an optional holding the moving one cost about 20 instructions a hit).
 [[gnu::noinline]] SurfacePoint moving_surface_point(const TriangleMesh& mesh, const Instance& inst,
                                                     const Ray& ray, const Hit& hit) {
-    return surface_point_on(mesh, instance_transform_at(inst, ray.time), ray, hit);
+    return surface_point_on<false>(mesh, instance_transform_at(inst, ray.time), ray, hit);
+}
+
+// Any other hit on a static instance; out of line, so that make_surface_point keeps the
+// bare path's few registers and small frame (the general path spills a 0x228-byte one).
+[[gnu::noinline]] SurfacePoint static_surface_point(const TriangleMesh& mesh, const Transform& xf,
+                                                    const Ray& ray, const Hit& hit) {
+    return surface_point_on<false>(mesh, xf, ray, hit);
 }
 
 }  // namespace
@@ -194,7 +209,9 @@ SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& h
     const Instance& inst = scene.instances[hit.instance];
     const TriangleMesh& mesh = scene.meshes[hit.mesh];
     if (!inst.motion.empty()) return moving_surface_point(mesh, inst, ray, hit);
-    return surface_point_on(mesh, inst.to_world, ray, hit);
+    if (hit.facet && (hit.facet->flags & Facet::kBare))
+        return surface_point_on<true>(mesh, inst.to_world, ray, hit);
+    return static_surface_point(mesh, inst.to_world, ray, hit);
 }
 
 Vec3 smooth_surface_point(Vec3 p, const Vec3 v[3], const Vec3 n[3], const float b[3]) {
