@@ -61,21 +61,22 @@ constexpr float rounding_gamma(int n) {
 // the surface it leaves (self-intersection "acne").
 Vec3 offset_ray_origin(Vec3 p, Vec3 ng, Vec3 w);
 
-// p moved along n, to the side w points to, just past the error box p_error (times a
-// safety factor of 4), then rounded away from p (pbrt-v4's OffsetRayOrigin): a ray from
-// there cannot hit the surface it leaves, and the offset is a few ULPs of the
-// coordinates along n only, so contact shadows stay put far from the origin.
-inline Vec3 offset_ray_origin(Vec3 p, Vec3 p_error, Vec3 n, Vec3 w) {
+// p moved along `side` (the unit normal n or -n, towards where the ray leaves), just past
+// the error box p_error (times a safety factor of 4), then rounded away from p (pbrt-v4's
+// OffsetRayOrigin, which picks the side from a direction w by dot(w, n): ray_origin knows
+// it without one): a ray from there cannot hit the surface it leaves, and the offset is a
+// few ULPs of the coordinates along n only, so contact shadows stay put far from the
+// origin.
+inline Vec3 offset_ray_origin_along(Vec3 p, Vec3 p_error, Vec3 side) {
     // Safety factor 4: the accelerators move the origin into instance space, which
     // rounds about as much again as p_error covers. The error bound is 0 along an axis
     // where every term is 0 (a plane y = 0), but the accelerators' arithmetic is not
     // exact: never less than gamma(3) of the largest coordinate (about 1.5 ULPs), nor a
     // tiny absolute floor.
     const float scale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-    const float spread = std::abs(n.x) * p_error.x + std::abs(n.y) * p_error.y +
-                         std::abs(n.z) * p_error.z;  // dot(|n|, p_error)
+    const float spread = std::abs(side.x) * p_error.x + std::abs(side.y) * p_error.y +
+                         std::abs(side.z) * p_error.z;  // dot(|n|, p_error)
     const float d = 4 * std::max({spread, rounding_gamma(3) * scale, 1e-20f});
-    const Vec3 side = dot(w, n) < 0 ? -n : n;
     Vec3 po = p + side * d;
     // The addition rounds too: step each coordinate one float further along the normal.
     for (int i = 0; i < 3; ++i) {
@@ -86,10 +87,10 @@ inline Vec3 offset_ray_origin(Vec3 p, Vec3 p_error, Vec3 n, Vec3 w) {
 }
 
 // The origin of the rays that leave sp on one side: p_smooth pushed off along ng on the
-// side of ns ("outside"), p along -ng on the other (offset_ray_origin).
+// side of ns ("outside"), p along -ng on the other (offset_ray_origin_along).
 inline Vec3 ray_origin(const SurfacePoint& sp, bool outside) {
-    return offset_ray_origin(outside ? sp.p_smooth : sp.p, sp.p_error, sp.ng,
-                             outside ? sp.ng : -sp.ng);
+    return outside ? offset_ray_origin_along(sp.p_smooth, sp.p_error, sp.ng)
+                   : offset_ray_origin_along(sp.p, sp.p_error, -sp.ng);
 }
 
 // The side a ray in direction w leaves sp on. It is decided by the interpolated normal
