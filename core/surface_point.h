@@ -152,6 +152,17 @@ inline Ray spawn_ray(const RayOrigins& origins, Vec3 w, float dist, float time) 
     return spawn_ray_from(origins.point(), origins.for_direction(w), w, dist, time);
 }
 
+// A path's ray turned into its continuation from the vertex along unit w: spawn_ray with
+// an infinite distance, its time and cone left as they are. Written field by field into
+// the ray: `ray = spawn_ray(...)` built a temporary and copied it over with 16-byte loads
+// of its 4- and 8-byte stores, two store-forwarding stalls at every bounce.
+inline void continue_ray(Ray& ray, const RayOrigins& origins, Vec3 w) {
+    ray.o = origins.for_direction(w);
+    ray.d = w;
+    ray.tmin = 0;
+    ray.tmax = std::numeric_limits<float>::infinity();
+}
+
 // The normal that decides on which side of the surface a direction lies (light and
 // BSDF samples whose lobe side disagrees with it are dropped): the interpolated normal
 // sp.ns turned to the side of n_side (the geometric normal on the viewer's side). With

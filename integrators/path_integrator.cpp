@@ -183,9 +183,8 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
             if (draws.get_1d() < 1 - p) break;
             beta /= p;
         }
-        const RayCone cone = bounce_cone(ray.cone, sp.cone_width, bs->pdf, bs->is_specular());
-        ray = spawn_ray(origins, wi_world, std::numeric_limits<float>::infinity(), ray.time);
-        ray.cone = cone;
+        ray.cone = bounce_cone(ray.cone, sp.cone_width, bs->pdf, bs->is_specular());
+        continue_ray(ray, origins, wi_world);
     }
     return L;
 }
