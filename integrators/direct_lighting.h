@@ -92,8 +92,10 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
     const Bsdf& bsdf = *sd.bsdf.get();
     const Vec3 wi = to_bsdf_local(bsdf, sd.frame, ls->wi);
     // The shading frame and the interpolated normal must agree on the side, or light
-    // leaks (spawn_ray then keeps rays the facet's plane puts behind from leaking).
-    if ((wi.z > 0) != (dot(ls->wi, sd.n_side) > 0)) return Spectrum(0);
+    // leaks (spawn_ray then keeps rays the facet's plane puts behind from leaking). Without
+    // a normal map n_side is frame.n (ShadingData::bumped) and wi.z is dot(ls->wi,
+    // frame.n) (to_bsdf_local): they agree by construction, so the dot is skipped.
+    if (sd.bumped && (wi.z > 0) != (dot(ls->wi, sd.n_side) > 0)) return Spectrum(0);
     // The BSDF's density for the MIS weight comes with f where the weight needs it (one
     // pass over the shared terms), so only after the shadow ray is it read.
     const bool weighted = !ls->delta && strategy == LightStrategy::Mis;
