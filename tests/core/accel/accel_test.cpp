@@ -35,6 +35,12 @@ TEST(IsTraceable, EachComponentAndTheIntervalCanMakeARayUntraceable) {
         }
     Ray big = ray_at(1.8e18f);  // just inside Embree's FLT_LARGE
     EXPECT_TRUE(is_traceable(big));
+    // The bound itself, either sign, and the float above it (the test compares bits).
+    EXPECT_TRUE(is_traceable(ray_at(1.844e18f)));
+    EXPECT_TRUE(is_traceable(ray_at(-1.844e18f)));
+    EXPECT_FALSE(is_traceable(ray_at(std::nextafter(1.844e18f, inf))));
+    EXPECT_FALSE(is_traceable(ray_at(-std::nextafter(1.844e18f, inf))));
+    EXPECT_FALSE(is_traceable(ray_at(-nan)));  // a NaN with its sign bit set
     Ray zero = ray_at(0);
     zero.d = {0, 0, 0};
     EXPECT_FALSE(is_traceable(zero));
