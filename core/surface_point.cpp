@@ -107,11 +107,10 @@ template <bool kBare>
 
     Vec3 ns = ng;
     Vec3 p_smooth = p;
-    if (kBare) {
-        if (facet->flags & Facet::kOpposed) ns = -ng;
-    } else if (facet && has_ng && (facet->flags & Facet::kFlat)) {
+    if (kBare || (facet && has_ng && (facet->flags & Facet::kFlat))) {
         // A flat facet's shading normal is ng on n0's side (is_flat_facet): no vertex
-        // normal to read, transform and normalize at each hit.
+        // normal to read, transform and normalize at each hit. (A bare facet without
+        // normals is never kOpposed: ns is ng.)
         if (facet->flags & Facet::kOpposed) ns = -ng;
     } else if (!mesh.normals.empty()) {
         const bool bends = !mesh.motion_normals.empty();
