@@ -4,10 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
+#include "core/math/float4.h"
 
 namespace penumbra {
 
@@ -35,68 +32,6 @@ float split_cost(const LightBounds& b, int axis) {
     const float kr = d[axis] > 0 ? max_component(d) / d[axis] : 1.0f;
     return b.phi * m_omega * kr * area;
 }
-
-
-// Four floats, one per child of a node: SSE where the target has it (every x86-64), else
-// a plain array the compiler may vectorise. Only what importance4 needs.
-#if defined(__SSE2__)
-struct F4 {
-    __m128 v;
-    F4() = default;
-    explicit F4(__m128 x) : v(x) {}
-    F4(float x) : v(_mm_set1_ps(x)) {}  // NOLINT: broadcasts, as the scalar formulas read
-    static F4 load(const float* p) { return F4(_mm_load_ps(p)); }
-    void store(float* p) const { _mm_store_ps(p, v); }
-};
-inline F4 operator+(F4 a, F4 b) { return F4(_mm_add_ps(a.v, b.v)); }
-inline F4 operator-(F4 a, F4 b) { return F4(_mm_sub_ps(a.v, b.v)); }
-inline F4 operator*(F4 a, F4 b) { return F4(_mm_mul_ps(a.v, b.v)); }
-inline F4 operator/(F4 a, F4 b) { return F4(_mm_div_ps(a.v, b.v)); }
-inline F4 sqrt4(F4 a) { return F4(_mm_sqrt_ps(a.v)); }
-inline F4 min4(F4 a, F4 b) { return F4(_mm_min_ps(a.v, b.v)); }
-inline F4 max4(F4 a, F4 b) { return F4(_mm_max_ps(a.v, b.v)); }
-// Masks are all-ones lanes, as SSE's comparisons give them.
-inline F4 gt(F4 a, F4 b) { return F4(_mm_cmpgt_ps(a.v, b.v)); }
-// m ? a : b, lane by lane.
-inline F4 select(F4 m, F4 a, F4 b) {
-    return F4(_mm_or_ps(_mm_and_ps(m.v, a.v), _mm_andnot_ps(m.v, b.v)));
-}
-// a with the bits of mask cleared (mask: sign bits, so |a| where set).
-inline F4 clear_bits(F4 a, const uint32_t* mask) {
-    return F4(_mm_andnot_ps(_mm_load_ps(reinterpret_cast<const float*>(mask)), a.v));
-}
-#else
-struct F4 {
-    float v[4];
-    F4() = default;
-    F4(float x) : v{x, x, x, x} {}  // NOLINT: broadcasts, as the scalar formulas read
-    static F4 load(const float* p) { return {p[0], p[1], p[2], p[3]}; }
-    void store(float* p) const { std::copy(v, v + 4, p); }
-    F4(float a, float b, float c, float d) : v{a, b, c, d} {}
-};
-template <typename Op>
-F4 lanes(F4 a, F4 b, Op op) {
-    return {op(a.v[0], b.v[0]), op(a.v[1], b.v[1]), op(a.v[2], b.v[2]), op(a.v[3], b.v[3])};
-}
-inline F4 operator+(F4 a, F4 b) { return lanes(a, b, [](float x, float y) { return x + y; }); }
-inline F4 operator-(F4 a, F4 b) { return lanes(a, b, [](float x, float y) { return x - y; }); }
-inline F4 operator*(F4 a, F4 b) { return lanes(a, b, [](float x, float y) { return x * y; }); }
-inline F4 operator/(F4 a, F4 b) { return lanes(a, b, [](float x, float y) { return x / y; }); }
-inline F4 sqrt4(F4 a) { return lanes(a, a, [](float x, float) { return std::sqrt(x); }); }
-// As SSE's min/max: the second operand when either is NaN.
-inline F4 min4(F4 a, F4 b) { return lanes(a, b, [](float x, float y) { return x < y ? x : y; }); }
-inline F4 max4(F4 a, F4 b) { return lanes(a, b, [](float x, float y) { return x > y ? x : y; }); }
-inline F4 gt(F4 a, F4 b) { return lanes(a, b, [](float x, float y) { return x > y ? 1.0f : 0.0f; }); }
-inline F4 select(F4 m, F4 a, F4 b) {
-    return {m.v[0] != 0 ? a.v[0] : b.v[0], m.v[1] != 0 ? a.v[1] : b.v[1],
-            m.v[2] != 0 ? a.v[2] : b.v[2], m.v[3] != 0 ? a.v[3] : b.v[3]};
-}
-inline F4 clear_bits(F4 a, const uint32_t* mask) {
-    F4 r;
-    for (int k = 0; k < 4; ++k) r.v[k] = mask[k] ? std::abs(a.v[k]) : a.v[k];
-    return r;
-}
-#endif
 
 // cos(max(0, a - b)), sin(max(0, a - b)) lane by lane (pbrt-v4's cosSubClamped /
 // sinSubClamped, as LightBounds::importance uses them).

@@ -105,6 +105,7 @@ void Transform::classify() {
         return a.m[3][3] == 1.0f;
     };
     m_translation_only = translation(m_m) && translation(m_inv);
+    m_translation = {m_m.m[0][3], m_m.m[1][3], m_m.m[2][3]};
     m_swaps_handedness = m_m.determinant3x3() < 0;
 }
 

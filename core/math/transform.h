@@ -91,6 +91,9 @@ public:
     // True when the matrix and its inverse are translations (identity included): the
     // linear part is exactly the identity and the last row (0, 0, 0, 1).
     bool is_translation_only() const { return m_translation_only; }
+    // The matrix's last column (m(0, 3), m(1, 3), m(2, 3)), kept as a Vec3 so that the hot
+    // path reads it as one.
+    const Vec3& translation() const { return m_translation; }
 
 private:
     // Sets the flags above from the matrices (every constructor calls it; the matrices
@@ -98,6 +101,7 @@ private:
     void classify();
 
     Mat4 m_m, m_inv;
+    Vec3 m_translation;
     bool m_translation_only = true;
     bool m_swaps_handedness = false;
 };

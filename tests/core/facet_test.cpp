@@ -35,6 +35,12 @@ std::vector<Case> cases() {
         {"equal normals off the face normal", tri, {up, up, up}, kN, false},
         {"smooth", tri, {up, face, normalize(Vec3(0.2f, 1, 0.3f))}, kN, false},
         {"no normals", tri, {}, kN, true},
+        // Coordinates of both signs and sizes: the bare path's SSE lanes take |p| apart.
+        {"no normals, negative coordinates",
+         {{-3.5f, 0.25f, -1e3f}, {2, -0.3f, -999.5f}, {-0.2f, -7, -1000.25f}},
+         {},
+         kN,
+         true},
         {"huge normals (norms overflow)",
          tri,
          {face * 1e20f, face * 1e20f, face * 1e20f},
@@ -99,7 +105,7 @@ TEST(Facet, HitsWithTheirFacetGiveTheSurfacePointOfHitsWithout) {
                             ++compared;
                         }
             }
-    EXPECT_EQ(compared, 7 * 4 * 2 * 4 * 3 * 2);
+    EXPECT_EQ(compared, 8 * 4 * 2 * 4 * 3 * 2);
 }
 
 // A bare facet (make_surface_point's short path) is one whose hits need nothing of the mesh
