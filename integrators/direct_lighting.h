@@ -116,38 +116,48 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
     return f * tr * ls->Li * (std::abs(wi.z) * w / light_pdf);
 }
 
-// One light sample at the shading point, MIS-weighted against `bsdf_samples` BSDF samples
-// per `light_samples` light samples when strategy is Mis. Returns f * Li * |cos| * w / pdf,
-// times the transmittance of the medium the shadow ray starts in (media: wo's side for
-// reflection, the far side for transmission; surfaces on the way block it). `origins`
-// holds the shading point and the origins of the rays leaving it, which the vertex's
-// continuation shares (RayOrigins). Inline into the path tracer's loop, its one caller:
-// the call's set-up and its eleven arguments cost about 25 instructions a vertex, 1% of
-// the render's (docs/performance.md, sixteenth session).
+// A light sample's draws: the light choice and the point on the light. Where the choice
+// allows it, the point's first coordinate chooses the light too (rescaled, as Cycles
+// does): the points on an emitter made of several triangles (the Cornell box's
+// two-triangle panel) then stay stratified over all of it, not over each triangle apart;
+// direct light's relMSE there fell 30% at 64 spp (docs/performance.md). The choice is
+// drawn in every case, so that the sampler's dimensions do not depend on the light
+// sampler (deferred: a remapping choice does not read it).
+struct LightDraws {
+    PathSampler::Deferred1d choice;
+    Vec2 u;
+};
+inline LightDraws draw_light(PathSampler& sampler) {
+    LightDraws d;
+    d.choice = sampler.defer_1d();
+    d.u = sampler.get_2d();
+    return d;
+}
+
+// One light sample at the shading point from the draws `u` (draw_light), MIS-weighted
+// against `bsdf_samples` BSDF samples per `light_samples` light samples when strategy is
+// Mis. Returns f * Li * |cos| * w / pdf, times the transmittance of the medium the
+// shadow ray starts in (media: wo's side for reflection, the far side for transmission;
+// surfaces on the way block it). `origins` holds the shading point and the origins of
+// the rays leaving it, which the vertex's continuation shares (RayOrigins). Inline into
+// the path tracer's loop, its one caller: the call's set-up and its eleven arguments
+// cost about 25 instructions a vertex, 1% of the render's (docs/performance.md,
+// sixteenth session).
 [[gnu::always_inline]] inline Spectrum sample_one_light(
     const RenderContext& ctx, const RayOrigins& origins, const ShadingData& sd, Vec3 wo, float time,
-    PathSampler& sampler, LightStrategy strategy, float light_samples = 1, float bsdf_samples = 1,
-    const SideMedia& media = {}) {
-    // Where the choice allows it, the light sample's first coordinate chooses the light
-    // too (rescaled, as Cycles does): the points on an emitter made of several triangles
-    // (the Cornell box's two-triangle panel) then stay stratified over all of it, not
-    // over each triangle apart; direct light's relMSE there fell 30% at 64 spp
-    // (docs/performance.md). u_light is drawn in every case, so that the sampler's
-    // dimensions do not depend on the light sampler (deferred: a remapping choice does
-    // not read it).
+    const PathSampler& sampler, const LightDraws& u, LightStrategy strategy,
+    float light_samples = 1, float bsdf_samples = 1, const SideMedia& media = {}) {
     const SurfacePoint& sp = origins.point();
-    const PathSampler::Deferred1d u_light = sampler.defer_1d();
-    const Vec2 u = sampler.get_2d();
     // The remapped coordinate goes to its own float: written through a pointer into u
     // and read back as the whole Vec2, it stalled on store forwarding (a third of this
     // function's time in the profile).
-    float u_x = u.x;
+    float u_x = u.u.x;
     const std::optional<SampledLight> chosen =
         ctx.lights.remaps_choice()
-            ? ctx.lights.sample_remapped(u.x, &u_x)
-            : ctx.lights.sample(ShadingPoint{sp.p, sd.ng}, sampler.value(u_light));
+            ? ctx.lights.sample_remapped(u.u.x, &u_x)
+            : ctx.lights.sample(ShadingPoint{sp.p, sd.ng}, sampler.value(u.choice));
     if (!chosen) return Spectrum(0);
-    return sample_chosen_light(ctx, origins, sd, wo, time, &*chosen, Vec2(u_x, u.y), strategy,
+    return sample_chosen_light(ctx, origins, sd, wo, time, &*chosen, Vec2(u_x, u.u.y), strategy,
                                light_samples, bsdf_samples, media);
 }
 
