@@ -148,6 +148,21 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         const RayOrigins origins(sp);
         const SideMedia sides =
             kMedia ? side_media(ctx, media.stack, sp.material, sd.front_face) : SideMedia{};
+        // The next vertex (depth max_depth) takes no light sample: the BSDF sample's ray
+        // there could only find emission. Where nothing a ray can reach emits, the path
+        // ends here with the same radiance, one ray and one shading short (as Embree's
+        // pathtracer tutorial does after its last segment).
+        const bool last =
+            depth + 1 >= m_options.max_depth && !ctx.has_emission && !ctx.lights.environment();
+        auto sample_bsdf = [&](Vec2 u_dir, float u_lobe) {
+            return bsdf_sample(bsdf, wo, u_lobe, u_dir, Transport::Radiance);
+        };
+        // With the draws taken early, the BSDF sample, which needs nothing of the light
+        // sample, is taken before it: its chain (the disk mapping's division and square
+        // root, the frame) then runs beside the light sample's, where after the shadow
+        // ray's traversal it stood between that and the next ray. The same values.
+        const std::optional<BsdfSample> early_bs =
+            kEarlyDraws && !last ? sample_bsdf(early.u_dir, early.u_lobe) : std::nullopt;
         if (depth < m_options.max_depth)
             L += clamped(beta * cover.share *
                              sample_one_light(ctx, origins, sd, wo, ray.time, draws,
@@ -159,19 +174,16 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
             if (++passes > 256) break;
             continue;
         }
-        // The next vertex (depth max_depth) takes no light sample: the BSDF sample's ray
-        // there could only find emission. Where nothing a ray can reach emits, the path
-        // ends here with the same radiance, one ray and one shading short (as Embree's
-        // pathtracer tutorial does after its last segment).
-        if (depth + 1 >= m_options.max_depth && !ctx.has_emission && !ctx.lights.environment())
-            break;
+        if (last) break;
 
-        // The square first, then the lobe choice: the order GCC gave the two calls as
-        // arguments (unspecified in C++), written out so every compiler draws the same.
-        const Vec2 u_dir = kEarlyDraws ? early.u_dir : draws.get_2d();
-        const float u_lobe = kEarlyDraws ? early.u_lobe : draws.get_1d();
-        const std::optional<BsdfSample> bs =
-            bsdf_sample(bsdf, wo, u_lobe, u_dir, Transport::Radiance);
+        const std::optional<BsdfSample> late_bs = kEarlyDraws ? std::nullopt : [&] {
+            // The square first, then the lobe choice: the order GCC gave the two calls as
+            // arguments (unspecified in C++), written out so every compiler draws the same.
+            const Vec2 u_dir = draws.get_2d();
+            const float u_lobe = draws.get_1d();
+            return sample_bsdf(u_dir, u_lobe);
+        }();
+        const std::optional<BsdfSample>& bs = kEarlyDraws ? early_bs : late_bs;
         if (!bs) break;
         const Vec3 wi_world = sd.frame.to_world(bs->wi);
         // Directions the interpolated normal puts on the other side than the lobe would
