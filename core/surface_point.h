@@ -117,11 +117,11 @@ private:
     Vec3 m_outside;
 };
 
-// A ray from origin o (ray_origin's for the side w leaves sp on) towards a point at
-// distance dist along unit w, stopping short of it.
-// Inline, as offset_ray_origin: the caller reads the ray at once, and a ray returned
-// through memory stalled on store forwarding (a 16-byte load of 4-byte stores).
-inline Ray spawn_ray_from(const SurfacePoint& sp, Vec3 o, Vec3 w, float dist, float time) {
+// A ray from origin o (ray_origin's for the side w leaves sp on) along unit w; where
+// dist is finite, towards `target` (the point at distance dist along w), stopping short
+// of it. Inline, as offset_ray_origin: the caller reads the ray at once, and a ray
+// returned through memory stalled on store forwarding (a 16-byte load of 4-byte stores).
+inline Ray spawn_ray_from(Vec3 o, Vec3 w, float dist, Vec3 target, float time) {
     Ray r;
     r.o = o;
     r.d = w;
@@ -132,7 +132,7 @@ inline Ray spawn_ray_from(const SurfacePoint& sp, Vec3 o, Vec3 w, float dist, fl
         // (pbrt-v4's SpawnRayTo). Kept parallel to w, a lifted origin would carry the
         // segment's end past the point, into the area light sampled there, which then
         // blocks its own light (a smooth sphere under a panel lost 60% of its direct light).
-        const Vec3 to = sp.p + w * dist - r.o;
+        const Vec3 to = target - r.o;
         const float len = length(to);
         r.d = len > 0 ? to / len : w;
         r.tmax = len * (1 - 1e-4f);
@@ -141,15 +141,17 @@ inline Ray spawn_ray_from(const SurfacePoint& sp, Vec3 o, Vec3 w, float dist, fl
     return r;
 }
 
-// A ray from sp (p_smooth when w leaves on the side of ns) towards a point at distance
+// A ray from sp (p_smooth when w leaves on the side of ns) towards the point at distance
 // dist along unit w, stopping short of it.
 inline Ray spawn_ray(const SurfacePoint& sp, Vec3 w, float dist, float time) {
-    return spawn_ray_from(sp, ray_origin(sp, leaves_outside(sp, w)), w, dist, time);
+    return spawn_ray_from(ray_origin(sp, leaves_outside(sp, w)), w, dist, sp.p + w * dist, time);
 }
 
-// The same, with the origin from the vertex's origins.
-inline Ray spawn_ray(const RayOrigins& origins, Vec3 w, float dist, float time) {
-    return spawn_ray_from(origins.point(), origins.for_direction(w), w, dist, time);
+// A shadow ray from the vertex (its origins) to `target`, the point at distance dist
+// along unit w that the light sample gives (LightSample::p): the same ray up to the
+// rounding of sp.p + w * dist, with a shorter chain of dependent operations.
+inline Ray spawn_ray_to(const RayOrigins& origins, Vec3 w, float dist, Vec3 target, float time) {
+    return spawn_ray_from(origins.for_direction(w), w, dist, target, time);
 }
 
 // A path's ray turned into its continuation from the vertex along unit w: spawn_ray with

@@ -43,8 +43,8 @@ Spectrum BasicIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
             const Vec3 wi = sd.frame.to_local(ls->wi);
             const Spectrum f = bsdf->eval(wo, wi, Transport::Radiance) * bump_shadowing(sd, ls->wi);
             if (is_black(f)) continue;
-            const float transparency =
-                shadow_transmittance(ctx, spawn_ray(sp, ls->wi, ls->dist, ray.time));
+            const float transparency = shadow_transmittance(
+                ctx, spawn_ray_to(RayOrigins(sp), ls->wi, ls->dist, ls->p, ray.time));
             if (!(transparency > 0)) continue;
             L += shaded * f * ls->Li * (transparency * std::abs(wi.z) / ls->pdf);
         }

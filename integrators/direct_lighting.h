@@ -104,7 +104,7 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
                                  : bsdf_eval(bsdf, wo, wi, Transport::Radiance)) *
                        bump_shadowing(sd, ls->wi);
     if (is_black(f)) return Spectrum(0);
-    const Ray shadow = spawn_ray(origins, ls->wi, ls->dist, time);
+    const Ray shadow = spawn_ray_to(origins, ls->wi, ls->dist, ls->p, time);
     const float transparency = shadow_transmittance(ctx, shadow);
     if (!(transparency > 0)) return Spectrum(0);
     Spectrum tr(transparency);

@@ -108,7 +108,7 @@ std::optional<LightSample> EnvironmentLight::sample_Li(const ShadingPoint&, Vec2
     if (m_image.width == 0) {
         if (is_black(m_constant)) return std::nullopt;
         const Vec3 wi = square_to_uniform_sphere(u);
-        return LightSample{wi, inf, m_constant, uniform_sphere_pdf(), false};
+        return LightSample{wi, inf, m_constant, uniform_sphere_pdf(), false, {}};
     }
     float pdf_uv;
     const Vec2 uv = m_dist.sample(u, &pdf_uv);
@@ -120,7 +120,7 @@ std::optional<LightSample> EnvironmentLight::sample_Li(const ShadingPoint&, Vec2
     const Vec2 uv_wi = direction_to_uv(wi);
     const float pdf = uv_pdf(uv_wi);
     if (!(pdf > 0) || !std::isfinite(pdf)) return std::nullopt;
-    return LightSample{wi, inf, texel_radiance(uv_wi), pdf, false};
+    return LightSample{wi, inf, texel_radiance(uv_wi), pdf, false, {}};  // no point: at infinity
 }
 
 float EnvironmentLight::pdf_Li(const ShadingPoint&, Vec3 wi, float) const {

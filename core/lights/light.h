@@ -27,6 +27,10 @@ struct LightSample {
     Spectrum Li;       // incident radiance (or intensity / d^2 for a delta light)
     float pdf = 0;     // solid angle density; 1 for delta lights
     bool delta = false;
+    // The point sampled on the light, where dist is finite: shadow rays aim at it
+    // (spawn_ray_to), so that their direction waits on the origin's offset only, not on
+    // the square root and division that give wi and dist.
+    Vec3 p;
 };
 
 class Light {

@@ -17,7 +17,7 @@ public:
         const float dist2 = length_squared(d);
         if (!(dist2 > 0) || is_black(m_I)) return std::nullopt;
         const float dist = std::sqrt(dist2);
-        return LightSample{d / dist, dist, m_I / dist2, 1.0f, true};
+        return LightSample{d / dist, dist, m_I / dist2, 1.0f, true, m_p};
     }
     float pdf_Li(const ShadingPoint&, Vec3, float) const override { return 0; }
     float power() const override { return 4 * kPi * luminance(m_I); }

@@ -28,7 +28,7 @@ std::optional<LightSample> SpotLight::sample_Li(const ShadingPoint& ref, Vec2, f
     const Vec3 wi = d / dist;
     const float att = falloff(dot(-wi, m_axis));
     if (att <= 0 || is_black(m_I)) return std::nullopt;
-    return LightSample{wi, dist, m_I * (att / dist2), 1.0f, true};
+    return LightSample{wi, dist, m_I * (att / dist2), 1.0f, true, m_p};
 }
 
 float SpotLight::power() const {

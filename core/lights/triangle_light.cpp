@@ -166,7 +166,7 @@ std::optional<LightSample> TriangleLight::sample_Li(const ShadingPoint& ref, Vec
     if (!(pdf > 0) || !std::isfinite(pdf)) return std::nullopt;
     const Spectrum Le = Le_at(b0, b1, b2);
     if (is_black(Le)) return std::nullopt;
-    return LightSample{d / dist, dist, Le, pdf, false};
+    return LightSample{d / dist, dist, Le, pdf, false, p};
 }
 
 float TriangleLight::pdf_Li(const ShadingPoint& ref, Vec3 wi, float time) const {

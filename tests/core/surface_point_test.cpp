@@ -129,7 +129,9 @@ TEST(SpawnRay, AVertexsSharedOriginsGiveEachRayItsOwnBits) {
         const float r = std::sqrt(std::max(0.0f, 1 - z * z));
         const Vec3 w(r * std::cos(phi), z, r * std::sin(phi));
         const float dist = i % 2 ? 0.7f : std::numeric_limits<float>::infinity();
-        const Ray a = spawn_ray(origins, w, dist, 0.25f), b = spawn_ray(sp, w, dist, 0.25f);
+        // spawn_ray aims at sp.p + w * dist; spawn_ray_to at the point it is given.
+        const Ray a = spawn_ray_to(origins, w, dist, sp.p + w * dist, 0.25f),
+                  b = spawn_ray(sp, w, dist, 0.25f);
         for (int k = 0; k < 3; ++k) {
             ASSERT_EQ(a.o[k], b.o[k]) << i;
             ASSERT_EQ(a.d[k], b.d[k]) << i;
