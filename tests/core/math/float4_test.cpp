@@ -3,19 +3,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
 
+#include "support/float_bits.h"
+
 namespace penumbra {
 namespace {
 
-uint32_t bits_of(float v) {
-    uint32_t b;
-    std::memcpy(&b, &v, sizeof b);
-    return b;
-}
+using test::bits_of;
 
 void expect_same_bits(Vec3 a, Vec3 b, const char* what) {
     EXPECT_EQ(bits_of(a.x), bits_of(b.x)) << what;

@@ -7,14 +7,12 @@
 #include <limits>
 #include <random>
 
+#include "support/float_bits.h"
+
 namespace penumbra {
 namespace {
 
-uint32_t bits_of(float v) {
-    uint32_t b;
-    std::memcpy(&b, &v, sizeof b);
-    return b;
-}
+using test::bits_of;
 
 // Bitwise equality, so that -0 and +0 differ.
 void expect_same_as_nextafter(float v) {
