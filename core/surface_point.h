@@ -117,7 +117,7 @@ private:
     Vec3 m_outside;
 };
 
-// A ray from origin o (ray_origin's for the side w leaves sp on) along unit w; where
+// A ray from origin o (ray_origin's for the side w leaves the surface on) along unit w; where
 // dist is finite, towards `target` (the point at distance dist along w), stopping short
 // of it. Inline, as offset_ray_origin: the caller reads the ray at once, and a ray
 // returned through memory stalled on store forwarding (a 16-byte load of 4-byte stores).
