@@ -2,14 +2,19 @@
 // our own BVH and grid) return the same Hit, so any result can be cross-checked.
 #pragma once
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <tbb/enumerable_thread_specific.h>
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
 
 #include "core/ray.h"
 #include "core/scene/scene.h"
@@ -27,12 +32,27 @@ struct AccelStats {
 // Rays every accelerator answers with a miss without tracing them: a NaN or infinite
 // component, a coordinate beyond 1.844e18 (Embree's FLT_LARGE: its ray.valid() assertion
 // aborts the process on such rays), a zero direction, or a NaN or empty [tmin, tmax].
-// Inline: it runs before every query.
+// Inline: it runs before every query, twice a path vertex. With SSE, the six magnitude
+// tests are two four-lane comparisons of the ray's two 16-byte spans (o and d.x, d and
+// tmin; the lanes past each vector are masked off): the same decisions, in about 15
+// instructions where the scalar tests and their branches took about 35.
 inline bool is_traceable(const Ray& ray) {
     constexpr float kLarge = 1.844e18f;
+#if defined(__SSE2__)
+    static_assert(offsetof(Ray, d) == offsetof(Ray, o) + 3 * sizeof(float) &&
+                  offsetof(Ray, tmin) == offsetof(Ray, d) + 3 * sizeof(float));
+    const __m128 o = _mm_loadu_ps(&ray.o.x), d = _mm_loadu_ps(&ray.d.x);
+    const __m128 large = _mm_set1_ps(kLarge), sign = _mm_set1_ps(-0.0f);
+    // cmple is false for NaN, as the scalar test below.
+    const int small = _mm_movemask_ps(_mm_cmple_ps(_mm_andnot_ps(sign, o), large)) &
+                      _mm_movemask_ps(_mm_cmple_ps(_mm_andnot_ps(sign, d), large));
+    const int nonzero = _mm_movemask_ps(_mm_cmpneq_ps(d, _mm_setzero_ps()));
+    return (small & 7) == 7 && (nonzero & 7) != 0 && ray.tmin <= ray.tmax;
+#else
     for (int a = 0; a < 3; ++a)  // written so that NaN fails every test
         if (!(std::abs(ray.o[a]) <= kLarge && std::abs(ray.d[a]) <= kLarge)) return false;
     return (ray.d.x != 0 || ray.d.y != 0 || ray.d.z != 0) && ray.tmin <= ray.tmax;
+#endif
 }
 
 class Accel {

@@ -53,6 +53,16 @@ TEST(IsTraceable, EachComponentAndTheIntervalCanMakeARayUntraceable) {
     EXPECT_FALSE(is_traceable(interval));
     interval.tmin = nan;
     EXPECT_FALSE(is_traceable(interval));
+    // tmin shares a 16-byte span with d in the SSE test, and d.x one with o: neither
+    // interval end is bounded by the magnitude tests.
+    interval.tmin = 1e30f;
+    interval.tmax = inf;
+    EXPECT_TRUE(is_traceable(interval));
+    Ray along_x = ray_at(0);
+    along_x.d = {-1, 0, 0};
+    EXPECT_TRUE(is_traceable(along_x));
+    along_x.d.x = 1e19f;  // in o's span as well as d's
+    EXPECT_FALSE(is_traceable(along_x));
 }
 
 Scene cube_scene() {
