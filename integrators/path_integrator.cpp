@@ -71,13 +71,15 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
     struct VertexDraws {
         LightDraws light;
         Vec2 u_dir;
-        float u_lobe = 0, u_rr = 0;
+        // Deferred: the Lambertian model, the commonest, has one lobe and does not read it.
+        PathSampler::Deferred1d lobe;
+        float u_rr = 0;
     } early;
     for (;;) {
         if constexpr (kEarlyDraws) {
             early.light = draw_light(draws);
             early.u_dir = draws.get_2d();
-            early.u_lobe = draws.get_1d();
+            early.lobe = draws.defer_1d();
             if (depth + 1 >= m_options.rr_depth) early.u_rr = draws.get_1d();
         }
         // The given hit is the camera ray's own: after an alpha pass-through, trace again.
@@ -162,7 +164,9 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         // root, the frame) then runs beside the light sample's, where after the shadow
         // ray's traversal it stood between that and the next ray. The same values.
         const std::optional<BsdfSample> early_bs =
-            kEarlyDraws && !last ? sample_bsdf(early.u_dir, early.u_lobe) : std::nullopt;
+            kEarlyDraws && !last
+                ? sample_bsdf(early.u_dir, bsdf.is_lambertian() ? 0.0f : draws.value(early.lobe))
+                : std::nullopt;
         if (depth < m_options.max_depth)
             L += clamped(beta * cover.share *
                              sample_one_light(ctx, origins, sd, wo, ray.time, draws,
