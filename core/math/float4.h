@@ -38,6 +38,11 @@ struct F4 {
                 _mm_cvtss_f32(_mm_movehl_ps(v, v))};
     }
     float lane0() const { return _mm_cvtss_f32(v); }
+    // Lane i in all four.
+    template <int i>
+    F4 broadcast() const {
+        return F4(_mm_shuffle_ps(v, v, _MM_SHUFFLE(i, i, i, i)));
+    }
 };
 inline F4 operator+(F4 a, F4 b) { return F4(_mm_add_ps(a.v, b.v)); }
 inline F4 operator-(F4 a, F4 b) { return F4(_mm_sub_ps(a.v, b.v)); }
@@ -69,6 +74,10 @@ struct F4 {
     static F4 load3(const Vec3& a) { return {a.x, a.y, a.z, 0.0f}; }
     Vec3 xyz() const { return {v[0], v[1], v[2]}; }
     float lane0() const { return v[0]; }
+    template <int i>
+    F4 broadcast() const {
+        return F4(v[i]);
+    }
 };
 template <typename Op>
 F4 lanes(F4 a, F4 b, Op op) {

@@ -34,7 +34,7 @@ struct Quat {
 
 class Transform {
 public:
-    Transform() : m_m(Mat4::identity()), m_inv(Mat4::identity()) {}
+    Transform() : m_m(Mat4::identity()), m_inv(Mat4::identity()) { classify(); }
     // Throws std::invalid_argument if m is singular.
     explicit Transform(const Mat4& m);
     Transform(const Mat4& m, const Mat4& inv) : m_m(m), m_inv(inv) { classify(); }
@@ -94,6 +94,13 @@ public:
     // The matrix's last column (m(0, 3), m(1, 3), m(2, 3)), kept as a Vec3 so that the hot
     // path reads it as one.
     const Vec3& translation() const { return m_translation; }
+    // True when the last row is (0, 0, 0, 1): point() divides by no w (it is exactly 1 at
+    // every finite point).
+    bool is_affine() const { return m_affine; }
+    // Column c of the matrix's top three rows, with a fourth float 0: 16-byte aligned, for
+    // the hot path's four-lane arithmetic (F4::load), where lane r of c0 * x + c1 * y +
+    // c2 * z + c3 is point()'s row r, in the same order.
+    const float* column(int c) const { return m_columns[c]; }
 
 private:
     // Sets the flags above from the matrices (every constructor calls it; the matrices
@@ -101,8 +108,10 @@ private:
     void classify();
 
     Mat4 m_m, m_inv;
+    alignas(16) float m_columns[4][4];
     Vec3 m_translation;
     bool m_translation_only = true;
+    bool m_affine = true;
     bool m_swaps_handedness = false;
 };
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
 #include "core/math/frame.h"
 
 namespace penumbra {
@@ -141,6 +143,27 @@ TEST(Transform, TranslationsTakeTheShortcutWithTheGeneralFormulasValues) {
     const Transform g = Transform::trs({1, 2, 3}, Quat{0, 0, s, s}, {2, -1, 0.5f});
     EXPECT_TRUE(g.swaps_handedness());
     for (Vec3 p : points) expect_formulas(g, p);
+}
+
+// The hot path's columns (surface_point.cpp's bare facets) are the matrix's, with a zero
+// fourth float, 16-byte aligned; only a (0, 0, 0, 1) last row is affine.
+TEST(Transform, ColumnsAndAffinityMatchTheMatrix) {
+    const float s = std::sqrt(0.5f);
+    Mat4 projective = Mat4::identity();
+    projective(3, 2) = 0.5f;
+    const Transform xfs[] = {Transform(), Transform::translate({1, -2, 3}),
+                             Transform::trs({1, 2, 3}, Quat{0, 0, s, s}, {2, -1, 0.5f}),
+                             Transform(projective)};
+    for (const Transform& xf : xfs) {
+        for (int c = 0; c < 4; ++c) {
+            EXPECT_EQ(reinterpret_cast<uintptr_t>(xf.column(c)) % 16, 0u);
+            for (int r = 0; r < 3; ++r) EXPECT_EQ(xf.column(c)[r], xf.matrix()(r, c));
+            EXPECT_EQ(xf.column(c)[3], 0.0f);
+        }
+        if (xf.is_translation_only()) EXPECT_TRUE(xf.is_affine());
+    }
+    EXPECT_TRUE(xfs[2].is_affine());
+    EXPECT_FALSE(xfs[3].is_affine());
 }
 
 TEST(Frame, IsOrthonormalForAnyNormal) {
