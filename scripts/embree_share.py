@@ -15,8 +15,9 @@ invocation, and quote medians of several rounds.
 
 The default render is the issue's profile: the point-light Cornell box, 256 px, 32 spp,
 box filter, 8 segments, one thread, pinned to one core (--core; -1 leaves it unpinned).
-Arguments after `--` replace it (keep --threads 1). Needs linux-perf
-(scripts/setup.sh --test installs it).
+Arguments after `--` replace it (keep --threads 1); scene paths are relative to the
+repository root. Needs linux-perf (scripts/setup.sh --test installs it) and permission
+to record (root, or kernel.perf_event_paranoid at most 2).
 """
 import argparse
 import os
@@ -65,11 +66,13 @@ def main():
         render_args = argv[argv.index("--") + 1:]
         argv = argv[:argv.index("--")]
     args = ap.parse_args(argv)
+    binaries = [os.path.abspath(b) for b in args.binaries]
+    os.chdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 
-    runs = {b: [] for b in args.binaries}
+    runs = {b: [] for b in binaries}
     with tempfile.TemporaryDirectory() as tmp:
         for r in range(args.rounds):
-            for b in args.binaries:
+            for b in binaries:
                 counts = samples_by_object(b, render_args, args.core, tmp)
                 embree = sum(n for k, n in counts.items() if k.startswith("libembree3"))
                 ours = counts.get(os.path.basename(b), 0)

@@ -28,8 +28,9 @@ if [ "${1:-}" = "--test" ]; then
         embree-tools
         # A single-node Slurm cluster for the farm test (tests/farm/run_slurm_test.sh).
         slurm-wlm munge
-        # Instruction counts of a render (scripts/render_instructions.sh).
-        valgrind
+        # Instruction counts of a render (scripts/render_instructions.sh), and Embree's
+        # share of its time (scripts/embree_share.py).
+        valgrind linux-perf
     )
 fi
 
