@@ -94,7 +94,7 @@ template <bool kBare>
         const F4 q4 = a0 + a1 + a2;
         const F4 q_err = (abs4(a0) + abs4(a1) + abs4(a2)) * F4(gamma(7));
         if (xf.is_translation_only()) {
-            const F4 t = F4::load3(xf.translation());
+            const F4 t = F4::load(xf.column(3));
             p = (q4 + t).xyz();
             p_error = (F4(gamma(3) + 1) * q_err + F4(gamma(3)) * (abs4(q4) + abs4(t))).xyz();
         } else {

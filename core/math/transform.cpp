@@ -105,7 +105,6 @@ void Transform::classify() {
         return a.m[3][3] == 1.0f;
     };
     m_translation_only = translation(m_m) && translation(m_inv);
-    m_translation = {m_m.m[0][3], m_m.m[1][3], m_m.m[2][3]};
     m_affine = m_m.m[3][0] == 0 && m_m.m[3][1] == 0 && m_m.m[3][2] == 0 && m_m.m[3][3] == 1;
     for (int c = 0; c < 4; ++c) {
         for (int r = 0; r < 3; ++r) m_columns[c][r] = m_m.m[r][c];

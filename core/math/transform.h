@@ -91,15 +91,12 @@ public:
     // True when the matrix and its inverse are translations (identity included): the
     // linear part is exactly the identity and the last row (0, 0, 0, 1).
     bool is_translation_only() const { return m_translation_only; }
-    // The matrix's last column (m(0, 3), m(1, 3), m(2, 3)), kept as a Vec3 so that the hot
-    // path reads it as one.
-    const Vec3& translation() const { return m_translation; }
     // True when the last row is (0, 0, 0, 1): point() divides by no w (it is exactly 1 at
     // every finite point).
     bool is_affine() const { return m_affine; }
     // Column c of the matrix's top three rows, with a fourth float 0: 16-byte aligned, for
     // the hot path's four-lane arithmetic (F4::load), where lane r of c0 * x + c1 * y +
-    // c2 * z + c3 is point()'s row r, in the same order.
+    // c2 * z + c3 is point()'s row r, in the same order; column 3 is the translation.
     const float* column(int c) const { return m_columns[c]; }
 
 private:
@@ -109,7 +106,6 @@ private:
 
     Mat4 m_m, m_inv;
     alignas(16) float m_columns[4][4];
-    Vec3 m_translation;
     bool m_translation_only = true;
     bool m_affine = true;
     bool m_swaps_handedness = false;
