@@ -7,6 +7,8 @@ renders each scene at several spp, its relMSE is measured against its own conver
   python3 scripts/crosscheck/efficiency.py --quick                        # a few minutes
   python3 scripts/crosscheck/efficiency.py --scenes all --spp 16,64,256 --out /tmp/eff.md
   python3 scripts/crosscheck/efficiency.py --embree                       # + Embree tutorial
+  python3 scripts/crosscheck/efficiency.py --embree-only --repeats 6 --interleave
+                                                                          # that table alone
 
 Matched in both: resolution, a one-pixel box filter, the path length (penumbra's
 --max-depth N, Cycles' N - 1 bounces of every kind), 2 threads, no denoising, no adaptive
@@ -69,6 +71,9 @@ def parse_args(argv):
     ap.add_argument("--timeout", type=int, default=1800, help="seconds per render")
     ap.add_argument("--embree", action="store_true",
                     help="also the equal-spp comparison with Embree's pathtracer tutorial")
+    ap.add_argument("--embree-only", action="store_true",
+                    help="only that comparison (its own fixed scene, size and spp: the "
+                         "issue's 256 px, 64 spp), none of the efficiency scenes")
     args = ap.parse_args(argv)
     if args.quick:
         given = " ".join(argv)
@@ -242,6 +247,9 @@ def main(argv):
     identities = {"penumbra": penumbra_identity(args.penumbra)}
     if "cycles" in args.renderers:
         identities["cycles"] = cycles_identity()
+    if args.embree_only:
+        from efficiency_embree import embree_table
+        return write_report(args, embree_table(args, identities))
     results = {}
     for name in args.scenes:
         caches = render_scene(args, name, identities)
@@ -270,14 +278,19 @@ def main(argv):
     if args.embree:
         from efficiency_embree import embree_table
         report += ["", embree_table(args, identities)]
-    text = "\n".join(report)
+    return write_report(args, "\n".join(report),
+                        {"args": vars(args), "identities": identities, "results": results})
+
+
+def write_report(args, text, record=None):
+    """Prints the report, and writes it to --out (with the measurements as OUT.json)."""
     print(text)
     if args.out:
         with open(args.out, "w") as f:
             f.write(text + "\n")
-        with open(args.out + ".json", "w") as f:
-            json.dump({"args": {k: v for k, v in vars(args).items()}, "identities": identities,
-                       "results": results}, f, indent=1)
+        if record is not None:
+            with open(args.out + ".json", "w") as f:
+                json.dump(record, f, indent=1)
     return 0
 
 
