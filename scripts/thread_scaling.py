@@ -50,6 +50,8 @@ def main():
     args = argv[split + 1:]  # the scene and penumbra's render options
     if not args:
         ap.error("give the scene and render options after --")
+    if opts.threads < 2:
+        ap.error("--threads must be at least 2 (it is measured against 1)")
     counts = (1, opts.threads)
     seconds = {t: [] for t in counts}
     user = {t: [] for t in counts}
