@@ -13,6 +13,7 @@
 #include <filesystem>
 
 #include "core/accel/accel_check.h"
+#include "core/accel/embree_accel.h"
 #include "core/camera/default_camera.h"
 #include "core/lights/light_set.h"
 #include "core/error.h"
@@ -49,6 +50,10 @@ void add_check_accel_command(CLI::App& app, CheckAccelOptions& o) {
     cmd->add_option("--spp", o.spp, "Samples per pixel for --images")
         ->capture_default_str()
         ->check(CLI::Range(1u, 1u << 16));
+    cmd->add_option("--embree-isa", o.embree_isas,
+                    "Also check Embree under these instruction sets against its default "
+                    "(sse4.2, avx2, avx512; Embree's device config isa=...)")
+        ->delimiter(',');
     add_timeline_options(cmd, o.timeline, false);
 }
 
@@ -123,7 +128,8 @@ float scene_radius(const Scene& scene) {
 // Renders with each accelerator, the same seed and samples, and prints an idiff-style
 // summary against Embree's image.
 void compare_images(const Scene& scene, const CameraDesc& cam_desc, int width, int height,
-                    unsigned spp, const std::vector<std::unique_ptr<Accel>>& accels) {
+                    unsigned spp, const std::vector<std::unique_ptr<Accel>>& accels,
+                    const std::vector<std::string>& names) {
     // Scenes without lights get a uniform white sky, so the images are not all black.
     std::unique_ptr<EnvironmentLight> env;
     if (scene.lights.empty() && !has_emission(scene))
@@ -141,12 +147,12 @@ void compare_images(const Scene& scene, const CameraDesc& cam_desc, int width, i
         images.push_back(render(ctx, *camera, *integrator, ropt).resolve());
     }
     std::printf("\nimages: %dx%d, basic integrator, %u spp, seed 1; differences from %s\n", width,
-                height, spp, accels[0]->stats().name.c_str());
+                height, spp, names[0].c_str());
     std::printf("  %-12s %16s %12s %12s\n", "accelerator", "pixels differ", "max |diff|",
                 "mean |diff|");
     for (size_t i = 1; i < accels.size(); ++i) {
         const ImageDiff d = diff_images(images[0], images[i]);
-        std::printf("  %-12s %9zu %5.2f%% %12.4g %12.4g\n", accels[i]->stats().name.c_str(),
+        std::printf("  %-14s %9zu %5.2f%% %12.4g %12.4g\n", names[i].c_str(),
                     d.differing, 100.0 * d.differing / (double(width) * height), d.max_abs,
                     d.mean_abs);
     }
@@ -175,8 +181,15 @@ int run_check_accel_command(const CheckAccelOptions& o) {
     const int height = std::max(1, int(std::lround(width / aspect)));
 
     std::vector<std::unique_ptr<Accel>> accels;
+    std::vector<std::string> names = accel_type_names();
     for (const std::string& name : accel_type_names())
         accels.push_back(make_accel(parse_accel_type(name), scene));
+    for (const std::string& isa : o.embree_isas) {
+        EmbreeBuildOptions eo;
+        eo.device_config = "isa=" + isa;
+        accels.push_back(std::make_unique<EmbreeAccel>(scene, eo));
+        names.push_back("embree-" + isa);
+    }
 
     const std::unique_ptr<Camera> camera = make_camera(cam_desc, width, height);
     CheckRayOptions ro;
@@ -194,38 +207,40 @@ int run_check_accel_command(const CheckAccelOptions& o) {
         per_kind[0], width, height, cam_desc.name.c_str(), per_kind[1], per_kind[2], per_kind[3],
         o.seed);
     const int threads = tbb::this_task_arena::max_concurrency();
-    std::printf("\n  %-12s %10s %12s %14s %16s\n", "accelerator", "build", "memory",
+    std::printf("\n  %-14s %10s %12s %14s %16s\n", "accelerator", "build", "memory",
                 "Mrays/s 1 thr", ("Mrays/s " + std::to_string(threads) + " thr").c_str());
-    for (const auto& accel : accels) {
-        const AccelStats st = accel->stats();
-        const double single = mrays_per_second(*accel, rays, false);
-        const double multi = mrays_per_second(*accel, rays, true);
-        std::printf("  %-12s %8.2f ms %12s %14.2f %16.2f\n", st.name.c_str(),
+    for (size_t i = 0; i < accels.size(); ++i) {
+        const Accel& accel = *accels[i];
+        const AccelStats st = accel.stats();
+        const double single = mrays_per_second(accel, rays, false);
+        const double multi = mrays_per_second(accel, rays, true);
+        std::printf("  %-14s %8.2f ms %12s %14.2f %16.2f\n", names[i].c_str(),
                     st.build_seconds * 1e3, format_bytes(st.memory_bytes).c_str(), single, multi);
     }
 
     const TraceResults reference = trace_rays(*accels[0], rays);
-    const std::string ref_name = accels[0]->stats().name;
+    const std::string ref_name = names[0];
     std::printf(
         "\nagreement with %s: hit/miss, instance+mesh+prim, t within %g relative "
         "+ %g eps M/(|d| |cos|) (M: coordinate magnitude), barycentric points within "
         "that along the ray + %g of the longest edge\n",
         ref_name.c_str(), double(kCheckTRelTolerance), double(kCheckTUlps),
         double(kCheckBaryTolerance));
-    std::printf("  %-12s %10s %10s %12s %9s %11s %7s\n", "accelerator", "rays", "disagree",
-                "edge/vertex", "grazing", "coincident", "other");
+    std::printf("  %-14s %10s %10s %12s %9s %11s %7s %13s\n", "accelerator", "rays", "disagree",
+                "edge/vertex", "grazing", "coincident", "other", "not identical");
     bool pass = true;
     std::vector<AgreementReport> reports;
     for (size_t i = 1; i < accels.size(); ++i) {
         const TraceResults res = trace_rays(*accels[i], rays);
         AgreementReport rep =
-            compare_results(scene, rays, reference, res, ref_name, accels[i]->stats().name);
-        std::printf("  %-12s %10llu %10llu %12llu %9llu %11llu %7llu\n", rep.name.c_str(),
+            compare_results(scene, rays, reference, res, ref_name, names[i]);
+        std::printf("  %-14s %10llu %10llu %12llu %9llu %11llu %7llu %13llu\n", rep.name.c_str(),
                     (unsigned long long)rep.rays, (unsigned long long)rep.disagreements(),
                     (unsigned long long)rep.count(Disagreement::EdgeOrVertex),
                     (unsigned long long)rep.count(Disagreement::Grazing),
                     (unsigned long long)rep.count(Disagreement::Coincident),
-                    (unsigned long long)rep.count(Disagreement::Other));
+                    (unsigned long long)rep.count(Disagreement::Other),
+                    (unsigned long long)rep.not_identical);
         pass = pass && rep.passes(o.threshold);
         reports.push_back(std::move(rep));
     }
@@ -247,7 +262,7 @@ int run_check_accel_command(const CheckAccelOptions& o) {
         for (const std::string& e : rep.examples) std::printf("  %s\n", e.c_str());
     }
 
-    if (o.images) compare_images(scene, cam_desc, width, height, o.spp, accels);
+    if (o.images) compare_images(scene, cam_desc, width, height, o.spp, accels, names);
 
     std::printf(
         "\n%s: %s (threshold: at most %g of the rays may disagree, coincident faces and "

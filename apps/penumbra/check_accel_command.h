@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 #include "io/timeline.h"
 
@@ -18,6 +19,9 @@ struct CheckAccelOptions {
     int width = 256;          // camera rays: one per pixel; also the --images size
     bool images = false;
     unsigned spp = 4;  // --images
+    // Also Embree under these instruction sets ("sse4.2", "avx2", "avx512"), each an
+    // accelerator of its own checked against the default Embree.
+    std::vector<std::string> embree_isas;
     TimelineSettings timeline;  // --time, --shutter-open/-close, --frame/--fps/--shutter
 };
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "core/sampling/rng.h"
 #include "core/sampling/warp.h"
@@ -298,6 +299,18 @@ Disagreement classify_hits(const Scene& scene, const Ray& ray, const std::option
     return Disagreement::Other;
 }
 
+namespace {
+
+bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+bool identical(const std::optional<Hit>& a, const std::optional<Hit>& b) {
+    if (!a || !b) return !a && !b;
+    return a->instance == b->instance && a->mesh == b->mesh && a->prim == b->prim &&
+           same_bits(a->t, b->t) && same_bits(a->b1, b->b1) && same_bits(a->b2, b->b2);
+}
+
+}  // namespace
+
 AgreementReport compare_results(const Scene& scene, const std::vector<CheckRay>& rays,
                                 const TraceResults& reference, const TraceResults& test,
                                 const std::string& reference_name, const std::string& test_name,
@@ -309,6 +322,7 @@ AgreementReport compare_results(const Scene& scene, const std::vector<CheckRay>&
         const Ray& ray = rays[i].ray;
         const std::optional<Hit>& a = reference.hits[i];
         const std::optional<Hit>& b = test.hits[i];
+        rep.not_identical += !identical(a, b) || reference.occluded[i] != test.occluded[i];
         Disagreement d = classify_hits(scene, ray, a, b);
         std::string what = "closest hit";
         if (d == Disagreement::None && rays[i].kind == RayKind::Shadow &&

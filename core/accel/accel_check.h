@@ -90,6 +90,9 @@ struct AgreementReport {
     // Edge/vertex disagreements that double precision settles: the side whose answer is
     // right (a hit inside its triangle, or a miss where the other's hit is outside).
     uint64_t edge_reference_right = 0, edge_test_right = 0;
+    // Rays whose answers are not bit for bit the same (any Hit field, or occluded()): the
+    // measure for two runs of one accelerator, such as Embree under two ISAs.
+    uint64_t not_identical = 0;
     std::vector<std::string> examples;  // the first few of each class
 
     uint64_t disagreements() const { return rays - per_class[0]; }

@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <mutex>
 #include <string>
 
+#include "core/accel/instance_transform.h"
+#include "core/accel/triangle_intersect.h"
 #include "core/error.h"
 #include "core/facet.h"
 #include "core/log.h"
@@ -31,6 +34,20 @@ void error_callback(void* user, RTCError code, const char* str) {
     LOG_ERROR("embree: error " << static_cast<int>(code) << ": " << (str ? str : ""));
     std::lock_guard<std::mutex> lock(sink->mutex);
     if (sink->first.empty()) sink->first = str ? str : "unknown error";
+}
+
+// A device with Embree's config string `config`, else PENUMBRA_EMBREE_CONFIG's (e.g.
+// "isa=sse4.2", "isa=avx2", "verbose=1"), so that every code path Embree has can run on
+// one machine. Images do not depend on it: EmbreeAccel recomputes every hit it reports.
+RTCDevice new_device(const std::string& config = {}) {
+    std::string c = config;
+    if (c.empty())
+        if (const char* env = std::getenv("PENUMBRA_EMBREE_CONFIG")) c = env;
+    RTCDevice device = rtcNewDevice(c.empty() ? nullptr : c.c_str());
+    if (!device)
+        throw InternalError("embree: cannot create a device" +
+                            (c.empty() ? std::string() : " with config \"" + c + "\""));
+    return device;
 }
 
 bool memory_callback(void* user, ssize_t bytes, bool) {
@@ -60,8 +77,7 @@ void set_transform_steps(RTCGeometry g, const std::vector<Transform>& steps) {
 }  // namespace
 
 Mat4 embree_transform_at(const std::vector<Transform>& steps, float u) {
-    RTCDevice device = rtcNewDevice(nullptr);
-    if (!device) throw InternalError("embree: cannot create device");
+    RTCDevice device = new_device();
     RTCScene empty = rtcNewScene(device);
     rtcCommitScene(empty);
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
@@ -97,6 +113,17 @@ struct EmbreeAccel::Impl {
     };
     uint32_t instance_count = 0;
     std::vector<FlatMesh> flat_ids;
+    // How each Scene instance maps world rays to object space, as our own accelerators
+    // map them (instance_transform.h), to recompute Embree's hits.
+    static constexpr uint32_t kStatic = ~0u;
+    struct Placement {
+        WorldToObject to_object;
+        uint32_t motion = kStatic;  // index into motion, or kStatic
+        bool identity = false;
+    };
+    std::vector<Placement> placements;
+    std::vector<std::vector<QuatDecomposition>> motion;
+    const Scene* scene = nullptr;
     // The flattened meshes' facets: per hit on them, make_surface_point reads the world
     // normal and the flat-shading flag instead of recomputing them (16 bytes a triangle,
     // within EmbreeBuildOptions::flatten_budget triangles).
@@ -108,9 +135,16 @@ struct EmbreeAccel::Impl {
             throw InternalError(std::string("embree: ") + what + ": " + errors.first);
     }
 
-    // The Hit of an Embree hit record: a flattened mesh's u, v on its world-space copy
-    // parametrise the object-space triangle as they would through an instance.
-    Hit hit(unsigned inst_id, unsigned geom_id, unsigned prim, float u, float v,
+    // The Hit of an Embree hit record. Embree picks the triangle; where the ray meets it
+    // is recomputed here (refine), so that no reported value depends on which code path
+    // Embree ran. A flattened mesh's hit is on its object-space triangle, as through an
+    // instance.
+    // The Scene mesh of an instanced object scene's geometry.
+    uint32_t mesh_of(unsigned inst_id, unsigned geom_id) const {
+        return mesh_ids[instance_object[inst_id]][geom_id];
+    }
+
+    Hit hit(const Ray& ray, unsigned inst_id, unsigned geom_id, unsigned prim, float u, float v,
             float t) const {
         Hit h;
         h.t = t;
@@ -126,7 +160,40 @@ struct EmbreeAccel::Impl {
         h.prim = prim;
         h.b1 = u;
         h.b2 = v;
+        refine(ray, &h);
         return h;
+    }
+
+    // Embree computes t, u and v in float with approximate reciprocals (RCPPS, whose bits
+    // differ between CPU vendors) and with or without FMA, by ISA; a moving instance's
+    // transform also with approximate square roots. They are recomputed with our own
+    // arithmetic, exactly as BvhAccel computes a hit on the same triangle: the ray mapped
+    // into object space (instance_transform.h), the triangle at the ray's time, the
+    // watertight test's plane hit (triangle_intersect.h). The edge functions' signs are
+    // not checked: Embree has decided the hit, and within rounding of an edge the
+    // barycentrics may be a little negative. False where the ray is parallel to the
+    // triangle in float (no plane hit).
+    bool plane_hit(const Ray& ray, uint32_t instance, uint32_t mesh_index, uint32_t prim,
+                   TriangleHit* th) const {
+        const Placement& pl = placements[instance];
+        const Ray oray = pl.identity              ? ray
+                         : pl.motion == kStatic ? transform_ray(pl.to_object, ray)
+                                                : moving_object_ray(motion[pl.motion], ray);
+        const TriangleMesh& mesh = scene->meshes[mesh_index];
+        const uint32_t* idx = &mesh.indices[3 * size_t(prim)];
+        Vec3 p[3];
+        for (int k = 0; k < 3; ++k) p[k] = position_at(mesh, idx[k], ray.time);
+        const TrianglePrecomp rt(oray);
+        return triangle_plane_hit(rt, p[0], p[1], p[2], triangle_edges(rt, p[0], p[1], p[2]), th);
+    }
+
+    // Where plane_hit has no answer, Embree's values stay.
+    void refine(const Ray& ray, Hit* h) const {
+        TriangleHit th;
+        if (!plane_hit(ray, h->instance, h->mesh, h->prim, &th)) return;
+        h->t = th.t;
+        h->b1 = th.b1;
+        h->b2 = th.b2;
     }
 
     ~Impl() {
@@ -136,6 +203,47 @@ struct EmbreeAccel::Impl {
         if (device) rtcReleaseDevice(device);
     }
 };
+
+namespace {
+
+// The query's context: Embree passes it to the filter below, which needs the world rays
+// (Embree hands it the ray in its own object space).
+struct QueryContext {
+    RTCIntersectContext embree;
+    const Ray* rays;  // indexed by RTCRay::id
+    const EmbreeAccel::Impl* impl;
+};
+
+void init_context(QueryContext* q, const Ray* rays, const EmbreeAccel::Impl* impl) {
+    rtcInitIntersectContext(&q->embree);
+    q->rays = rays;
+    q->impl = impl;
+}
+
+// On the triangles of moving instances and deforming meshes, Embree's t can be off by far
+// more than float rounding (its interpolated transform carries the approximate
+// reciprocal square root's error, ~1e-6 relative, divided by the cosine at the hit):
+// measured at 2.2e-4 behind a shadow ray's origin, a hit Embree counted. Such a hit
+// decides nothing here: a candidate counts only where our own t (plane_hit, as refine
+// reports it) lies in the ray's [tmin, tmax], so that a hit or an occlusion near the
+// origin does not depend on Embree's code path.
+void time_dependent_filter(const RTCFilterFunctionNArguments* args) {
+    const auto* q = reinterpret_cast<const QueryContext*>(args->context);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (!args->valid[i]) continue;
+        const Ray& ray = q->rays[RTCRayN_id(args->ray, args->N, i)];
+        const unsigned inst = RTCHitN_instID(args->hit, args->N, i, 0);
+        const unsigned geom = RTCHitN_geomID(args->hit, args->N, i);
+        const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
+        const uint32_t mesh = q->impl->mesh_of(inst, geom);
+        TriangleHit th;
+        if (q->impl->plane_hit(ray, inst, mesh, prim, &th) &&
+            !(th.t >= ray.tmin && th.t <= ray.tmax))
+            args->valid[i] = 0;
+    }
+}
+
+}  // namespace
 
 namespace {
 
@@ -181,19 +289,28 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
     const int flags = RTC_SCENE_FLAG_ROBUST | (options.compact ? RTC_SCENE_FLAG_COMPACT : 0);
     const auto start = std::chrono::steady_clock::now();
     Impl& im = *m_impl;
-    im.device = rtcNewDevice(nullptr);
-    if (!im.device) throw InternalError("embree: cannot create device");
+    im.scene = &scene;
+    im.device = new_device(options.device_config);
     rtcSetDeviceErrorFunction(im.device, error_callback, &im.errors);
     rtcSetDeviceMemoryMonitorFunction(im.device, memory_callback, &im.memory);
 
     const std::vector<bool> flat = flattened_instances(scene, options);
     std::vector<bool> needs_scene(scene.objects.size(), false);
-    for (size_t ii = 0; ii < scene.instances.size(); ++ii)
+    std::vector<bool> moves(scene.objects.size(), false);  // placed by a moving instance
+    for (size_t ii = 0; ii < scene.instances.size(); ++ii) {
         if (!flat[ii]) needs_scene[scene.instances[ii].object] = true;
+        if (!scene.instances[ii].motion.empty()) moves[scene.instances[ii].object] = true;
+    }
 
     // A triangle geometry of mesh, placed by to_world (nullptr: object space).
-    auto new_triangles = [&](const TriangleMesh& mesh, const Transform* to_world) {
+    // filtered: time_dependent_filter decides its candidate hits.
+    auto new_triangles = [&](const TriangleMesh& mesh, const Transform* to_world,
+                             bool filtered) {
         RTCGeometry g = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        if (filtered) {
+            rtcSetGeometryIntersectFilterFunction(g, time_dependent_filter);
+            rtcSetGeometryOccludedFilterFunction(g, time_dependent_filter);
+        }
         // The scene's arrays are shared, not copied, where they allow it: Embree reads
         // the last vertex with a 16-byte load (rtcSetSharedGeometryBuffer(3)), so a
         // vertex array needs a spare element of capacity (io/ reserves one). Other
@@ -246,7 +363,9 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
         rtcSetSceneBuildQuality(s, quality);
         im.object_scenes[oi] = s;
         for (uint32_t mesh_index : scene.objects[oi].meshes) {
-            RTCGeometry g = new_triangles(scene.meshes[mesh_index], nullptr);
+            const TriangleMesh& mesh = scene.meshes[mesh_index];
+            RTCGeometry g =
+                new_triangles(mesh, nullptr, moves[oi] || !mesh.motion_positions.empty());
             const uint32_t geom_id = rtcAttachGeometry(s, g);
             rtcReleaseGeometry(g);
             if (im.mesh_ids[oi].size() <= geom_id) im.mesh_ids[oi].resize(geom_id + 1);
@@ -263,6 +382,17 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
     rtcSetSceneBuildQuality(im.top, quality);
     im.instance_count = static_cast<uint32_t>(scene.instances.size());
     im.instance_object.resize(scene.instances.size());
+    im.placements.resize(scene.instances.size());
+    for (size_t ii = 0; ii < scene.instances.size(); ++ii) {
+        const Instance& inst = scene.instances[ii];
+        Impl::Placement& pl = im.placements[ii];
+        pl.to_object = world_to_object(inst.to_world.matrix());
+        pl.identity = inst.motion.empty() && inst.to_world.matrix().is_identity();
+        if (!inst.motion.empty()) {
+            pl.motion = static_cast<uint32_t>(im.motion.size());
+            im.motion.push_back(decompose_steps(inst.motion));
+        }
+    }
     for (size_t ii = 0; ii < scene.instances.size(); ++ii) {
         const Instance& inst = scene.instances[ii];
         im.instance_object[ii] = inst.object;
@@ -270,7 +400,7 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
             const bool identity = inst.to_world.matrix().is_identity();
             for (uint32_t mesh_index : scene.objects[inst.object].meshes) {
                 const TriangleMesh& mesh = scene.meshes[mesh_index];
-                RTCGeometry g = new_triangles(mesh, identity ? nullptr : &inst.to_world);
+                RTCGeometry g = new_triangles(mesh, identity ? nullptr : &inst.to_world, false);
                 rtcAttachGeometryByID(
                     im.top, g, im.instance_count + static_cast<unsigned>(im.flat_ids.size()));
                 rtcReleaseGeometry(g);
@@ -334,32 +464,32 @@ void fill_ray(const Ray& ray, RTCRay& r) {
 }  // namespace
 
 std::optional<Hit> EmbreeAccel::do_intersect(const Ray& ray) const {
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
+    QueryContext ctx;
+    init_context(&ctx, &ray, m_impl.get());
     RTCRayHit rh;
     fill_ray(ray, rh.ray);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(m_impl->top, &ctx, &rh);
+    rtcIntersect1(m_impl->top, &ctx.embree, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    return m_impl->hit(rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v,
+    return m_impl->hit(ray, rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v,
                        rh.ray.tfar);
 }
 
 bool EmbreeAccel::do_occluded(const Ray& ray) const {
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
+    QueryContext ctx;
+    init_context(&ctx, &ray, m_impl.get());
     RTCRay r;
     fill_ray(ray, r);
-    rtcOccluded1(m_impl->top, &ctx, &r);
+    rtcOccluded1(m_impl->top, &ctx.embree, &r);
     return r.tfar == -std::numeric_limits<float>::infinity();
 }
 
 void EmbreeAccel::intersect8(const Ray (&rays)[8], std::optional<Hit> (&hits)[8]) const {
     count_rays(8);
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
-    ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    QueryContext ctx;
+    init_context(&ctx, rays, m_impl.get());
+    ctx.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     alignas(32) int valid[8];
     alignas(32) RTCRayHit8 rh;
     for (int i = 0; i < 8; ++i) {
@@ -382,26 +512,27 @@ void EmbreeAccel::intersect8(const Ray (&rays)[8], std::optional<Hit> (&hits)[8]
         rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
         rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
     }
-    rtcIntersect8(valid, m_impl->top, &ctx, &rh);
+    rtcIntersect8(valid, m_impl->top, &ctx.embree, &rh);
     for (int i = 0; i < 8; ++i) {
         if (!valid[i] || rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) {
             hits[i].reset();
             continue;
         }
-        hits[i] = m_impl->hit(rh.hit.instID[0][i], rh.hit.geomID[i], rh.hit.primID[i],
+        hits[i] = m_impl->hit(rays[i], rh.hit.instID[0][i], rh.hit.geomID[i], rh.hit.primID[i],
                               rh.hit.u[i], rh.hit.v[i], rh.ray.tfar[i]);
     }
 }
 
 void EmbreeAccel::occluded_stream(const Ray* rays, size_t n, bool* occluded, bool coherent) const {
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
-    ctx.flags =
+    QueryContext ctx;
+    init_context(&ctx, rays, m_impl.get());
+    ctx.embree.flags =
         coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
     constexpr size_t kChunk = 256;
     RTCRay buffer[kChunk];
     for (size_t start = 0; start < n; start += kChunk) {
         const size_t m = std::min(kChunk, n - start);
+        ctx.rays = rays + start;
         for (size_t i = 0; i < m; ++i) {
             fill_ray(rays[start + i], buffer[i]);
             // An untraceable ray becomes an empty interval, which Embree skips.
@@ -412,8 +543,9 @@ void EmbreeAccel::occluded_stream(const Ray* rays, size_t n, bool* occluded, boo
                 safe.tmax = 0;
                 fill_ray(safe, buffer[i]);
             }
+            buffer[i].id = static_cast<unsigned>(i);
         }
-        rtcOccluded1M(m_impl->top, &ctx, buffer, unsigned(m), sizeof(RTCRay));
+        rtcOccluded1M(m_impl->top, &ctx.embree, buffer, unsigned(m), sizeof(RTCRay));
         for (size_t i = 0; i < m; ++i)
             occluded[start + i] = buffer[i].tfar == -std::numeric_limits<float>::infinity();
     }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/accel/accel.h"
@@ -29,6 +30,9 @@ struct EmbreeBuildOptions {
     bool flatten = true;
     size_t flatten_triangles = 65536;
     size_t flatten_budget = size_t(1) << 20;
+    // Embree's device config string (rtcNewDevice), e.g. "isa=sse4.2"; empty: the
+    // environment's PENUMBRA_EMBREE_CONFIG, if set.
+    std::string device_config;
 };
 
 class EmbreeAccel final : public Accel {
@@ -53,12 +57,13 @@ public:
     // n shadow-ray queries as one rtcOccluded1M stream; coherent sets Embree's hint.
     void occluded_stream(const Ray* rays, size_t n, bool* occluded, bool coherent) const;
 
+    struct Impl;  // Embree's objects and our ids; defined in the .cpp
+
 protected:
     std::optional<Hit> do_intersect(const Ray& ray) const override;
     bool do_occluded(const Ray& ray) const override;
 
 private:
-    struct Impl;
     std::unique_ptr<Impl> m_impl;
     AccelStats m_stats;
     size_t m_copied_bytes = 0;

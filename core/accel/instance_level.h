@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/accel/bvh_traverse.h"
+#include "core/accel/instance_transform.h"
 #include "core/scene/motion.h"
 #include "core/scene/scene.h"
 
@@ -47,36 +48,20 @@ public:
     }
 
 private:
-    // The only place that knows how an instance is placed. The inverse is kept and
-    // applied in double: the object-space ray is then the world ray rounded once, so hits
-    // near edges are decided as the scene's own (float) forward matrix places the
-    // triangles. With a float inverse, on scenes/instances.gltf this rounding alone put
-    // ~1 in 100,000 rays on the other side of an edge. A moving instance instead keeps
-    // its decomposed time steps; its matrix at ray.time is built in float as Embree
-    // builds it and inverted in double.
+    // A static instance keeps its world-to-object map (instance_transform.h), a moving
+    // one its decomposed time steps. With a float inverse, on scenes/instances.gltf the
+    // rounding alone put ~1 in 100,000 rays on the other side of an edge.
     static constexpr uint32_t kStatic = ~0u;
     struct Record {
-        double to_object[3][4];     // static: rows of the inverse of the affine part
+        WorldToObject to_object;    // static: the inverse of the affine part
         uint32_t instance;          // Scene::instances index
         uint32_t object;            // Scene::objects index
         uint32_t motion = kStatic;  // index into m_motion, or kStatic
     };
     Ray object_ray(const Record& rec, const Ray& ray) const {
-        if (rec.motion != kStatic) return moving_object_ray(rec, ray);
+        if (rec.motion != kStatic) return moving_object_ray(m_motion[rec.motion], ray);
         return transform_ray(rec.to_object, ray);
     }
-    // The ray through the rows of an affine world-to-object map, in double, rounded once.
-    static Ray transform_ray(const double (&m)[3][4], const Ray& ray) {
-        Ray r = ray;
-        for (int i = 0; i < 3; ++i) {
-            r.o[i] = static_cast<float>(m[i][0] * ray.o.x + m[i][1] * ray.o.y + m[i][2] * ray.o.z +
-                                        m[i][3]);
-            r.d[i] = static_cast<float>(m[i][0] * ray.d.x + m[i][1] * ray.d.y + m[i][2] * ray.d.z);
-        }
-        return r;
-    }
-
-    Ray moving_object_ray(const Record& rec, const Ray& ray) const;
 
     BvhTree m_tree;
     std::vector<Record> m_records;  // in the tree's leaf order
