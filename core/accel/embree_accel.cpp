@@ -124,6 +124,8 @@ struct EmbreeAccel::Impl {
     std::vector<Placement> placements;
     std::vector<std::vector<QuatDecomposition>> motion;
     const Scene* scene = nullptr;
+    // Some instance moves or some instanced mesh deforms: every query is filtered.
+    bool filter_every_query = false;
     // The flattened meshes' facets: per hit on them, make_surface_point reads the world
     // normal and the flat-shading flag instead of recomputing them (16 bytes a triangle,
     // within EmbreeBuildOptions::flatten_budget triangles).
@@ -139,23 +141,26 @@ struct EmbreeAccel::Impl {
     // is recomputed here (refine), so that no reported value depends on which code path
     // Embree ran. A flattened mesh's hit is on its object-space triangle, as through an
     // instance.
-    // The Scene mesh of an instanced object scene's geometry.
-    uint32_t mesh_of(unsigned inst_id, unsigned geom_id) const {
-        return mesh_ids[instance_object[inst_id]][geom_id];
+    // The Scene instance and mesh of an Embree hit's ids.
+    void ids_of(unsigned inst_id, unsigned geom_id, uint32_t* instance, uint32_t* mesh) const {
+        if (inst_id == RTC_INVALID_GEOMETRY_ID) {
+            const FlatMesh& ids = flat_ids[geom_id - instance_count];
+            *instance = ids.instance;
+            *mesh = ids.mesh;
+        } else {
+            *instance = inst_id;
+            *mesh = mesh_ids[instance_object[inst_id]][geom_id];
+        }
     }
 
     Hit hit(const Ray& ray, unsigned inst_id, unsigned geom_id, unsigned prim, float u, float v,
             float t) const {
         Hit h;
         h.t = t;
+        ids_of(inst_id, geom_id, &h.instance, &h.mesh);
         if (inst_id == RTC_INVALID_GEOMETRY_ID) {
             const FlatMesh& ids = flat_ids[geom_id - instance_count];
-            h.instance = ids.instance;
-            h.mesh = ids.mesh;
             if (ids.facets) h.facet = ids.facets + prim;
-        } else {
-            h.instance = inst_id;
-            h.mesh = mesh_ids[instance_object[inst_id]][geom_id];
         }
         h.prim = prim;
         h.b1 = u;
@@ -220,27 +225,33 @@ void init_context(QueryContext* q, const Ray* rays, const EmbreeAccel::Impl* imp
     q->impl = impl;
 }
 
-// On the triangles of moving instances and deforming meshes, Embree's t can be off by far
-// more than float rounding (its interpolated transform carries the approximate
-// reciprocal square root's error, ~1e-6 relative, divided by the cosine at the hit):
-// measured at 2.2e-4 behind a shadow ray's origin, a hit Embree counted. Such a hit
-// decides nothing here: a candidate counts only where our own t (plane_hit, as refine
-// reports it) lies in the ray's [tmin, tmax], so that a hit or an occlusion near the
-// origin does not depend on Embree's code path.
-void time_dependent_filter(const RTCFilterFunctionNArguments* args) {
+// Embree's t for a triangle and ours (refine) differ by rounding, and on moving
+// instances by far more (their interpolated transform carries the approximate reciprocal
+// square root's error, ~1e-6 relative, divided by the cosine at the hit: Embree counted a
+// shadow ray occluded by a hit 2.2e-4 behind its origin). Where it matters the query
+// decides by our t: a candidate counts only where its plane_hit t lies in the ray's
+// [tmin, tmax]. It matters for every query in a scene with moving or deforming geometry,
+// and for rays that continue past a hit (tmin just above the refined t of the surface
+// they pass through, which Embree's own t could still reach again).
+void refined_t_filter(const RTCFilterFunctionNArguments* args) {
     const auto* q = reinterpret_cast<const QueryContext*>(args->context);
     for (unsigned i = 0; i < args->N; ++i) {
         if (!args->valid[i]) continue;
         const Ray& ray = q->rays[RTCRayN_id(args->ray, args->N, i)];
-        const unsigned inst = RTCHitN_instID(args->hit, args->N, i, 0);
-        const unsigned geom = RTCHitN_geomID(args->hit, args->N, i);
-        const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
-        const uint32_t mesh = q->impl->mesh_of(inst, geom);
+        uint32_t instance, mesh;
+        q->impl->ids_of(RTCHitN_instID(args->hit, args->N, i, 0),
+                        RTCHitN_geomID(args->hit, args->N, i), &instance, &mesh);
         TriangleHit th;
-        if (q->impl->plane_hit(ray, inst, mesh, prim, &th) &&
+        if (q->impl->plane_hit(ray, instance, mesh, RTCHitN_primID(args->hit, args->N, i),
+                               &th) &&
             !(th.t >= ray.tmin && th.t <= ray.tmax))
             args->valid[i] = 0;
     }
+}
+
+// Whether a query needs refined_t_filter.
+bool needs_filter(const EmbreeAccel::Impl& im, const Ray& ray) {
+    return im.filter_every_query || ray.tmin > 0;
 }
 
 }  // namespace
@@ -286,7 +297,9 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
         options.quality == EmbreeBuildOptions::Quality::Low    ? RTC_BUILD_QUALITY_LOW
         : options.quality == EmbreeBuildOptions::Quality::High ? RTC_BUILD_QUALITY_HIGH
                                                                : RTC_BUILD_QUALITY_MEDIUM;
-    const int flags = RTC_SCENE_FLAG_ROBUST | (options.compact ? RTC_SCENE_FLAG_COMPACT : 0);
+    // CONTEXT_FILTER_FUNCTION: queries may carry refined_t_filter.
+    const int flags = RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION |
+                      (options.compact ? RTC_SCENE_FLAG_COMPACT : 0);
     const auto start = std::chrono::steady_clock::now();
     Impl& im = *m_impl;
     im.scene = &scene;
@@ -303,14 +316,8 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
     }
 
     // A triangle geometry of mesh, placed by to_world (nullptr: object space).
-    // filtered: time_dependent_filter decides its candidate hits.
-    auto new_triangles = [&](const TriangleMesh& mesh, const Transform* to_world,
-                             bool filtered) {
+    auto new_triangles = [&](const TriangleMesh& mesh, const Transform* to_world) {
         RTCGeometry g = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        if (filtered) {
-            rtcSetGeometryIntersectFilterFunction(g, time_dependent_filter);
-            rtcSetGeometryOccludedFilterFunction(g, time_dependent_filter);
-        }
         // The scene's arrays are shared, not copied, where they allow it: Embree reads
         // the last vertex with a 16-byte load (rtcSetSharedGeometryBuffer(3)), so a
         // vertex array needs a spare element of capacity (io/ reserves one). Other
@@ -364,8 +371,8 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
         im.object_scenes[oi] = s;
         for (uint32_t mesh_index : scene.objects[oi].meshes) {
             const TriangleMesh& mesh = scene.meshes[mesh_index];
-            RTCGeometry g =
-                new_triangles(mesh, nullptr, moves[oi] || !mesh.motion_positions.empty());
+            im.filter_every_query |= moves[oi] || !mesh.motion_positions.empty();
+            RTCGeometry g = new_triangles(mesh, nullptr);
             const uint32_t geom_id = rtcAttachGeometry(s, g);
             rtcReleaseGeometry(g);
             if (im.mesh_ids[oi].size() <= geom_id) im.mesh_ids[oi].resize(geom_id + 1);
@@ -400,7 +407,7 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
             const bool identity = inst.to_world.matrix().is_identity();
             for (uint32_t mesh_index : scene.objects[inst.object].meshes) {
                 const TriangleMesh& mesh = scene.meshes[mesh_index];
-                RTCGeometry g = new_triangles(mesh, identity ? nullptr : &inst.to_world, false);
+                RTCGeometry g = new_triangles(mesh, identity ? nullptr : &inst.to_world);
                 rtcAttachGeometryByID(
                     im.top, g, im.instance_count + static_cast<unsigned>(im.flat_ids.size()));
                 rtcReleaseGeometry(g);
@@ -466,6 +473,7 @@ void fill_ray(const Ray& ray, RTCRay& r) {
 std::optional<Hit> EmbreeAccel::do_intersect(const Ray& ray) const {
     QueryContext ctx;
     init_context(&ctx, &ray, m_impl.get());
+    if (needs_filter(*m_impl, ray)) ctx.embree.filter = refined_t_filter;
     RTCRayHit rh;
     fill_ray(ray, rh.ray);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -479,6 +487,7 @@ std::optional<Hit> EmbreeAccel::do_intersect(const Ray& ray) const {
 bool EmbreeAccel::do_occluded(const Ray& ray) const {
     QueryContext ctx;
     init_context(&ctx, &ray, m_impl.get());
+    if (needs_filter(*m_impl, ray)) ctx.embree.filter = refined_t_filter;
     RTCRay r;
     fill_ray(ray, r);
     rtcOccluded1(m_impl->top, &ctx.embree, &r);
@@ -494,6 +503,7 @@ void EmbreeAccel::intersect8(const Ray (&rays)[8], std::optional<Hit> (&hits)[8]
     alignas(32) RTCRayHit8 rh;
     for (int i = 0; i < 8; ++i) {
         valid[i] = is_traceable(rays[i]) ? -1 : 0;
+        if (valid[i] && needs_filter(*m_impl, rays[i])) ctx.embree.filter = refined_t_filter;
         Ray safe;
         safe.d = {0, 0, 1};
         const Ray& r = valid[i] ? rays[i] : safe;
@@ -544,6 +554,7 @@ void EmbreeAccel::occluded_stream(const Ray* rays, size_t n, bool* occluded, boo
                 fill_ray(safe, buffer[i]);
             }
             buffer[i].id = static_cast<unsigned>(i);
+            if (needs_filter(*m_impl, rays[start + i])) ctx.embree.filter = refined_t_filter;
         }
         rtcOccluded1M(m_impl->top, &ctx.embree, buffer, unsigned(m), sizeof(RTCRay));
         for (size_t i = 0; i < m; ++i)

@@ -2,7 +2,8 @@
 // a render with a checkpoint and the same command finishes it bit for bit as an
 // uninterrupted render; kill -9 loses only the work since the last timed checkpoint; a
 // stale checkpoint is not resumed; and `farm task` for every work item plus `farm merge`
-// writes images (banded or not, AOVs, half) with the pixels of `render --job`.
+// writes images (banded or not, AOVs, half) with the pixels of `render --job`, the
+// tasks run under every Embree ISA the CPU has.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -15,6 +16,8 @@
 #include <thread>
 
 #include "support/cli_process.h"
+#include "support/embree_isas.h"
+#include "support/exr_pixels.h"
 #include "support/gltf_builder.h"
 #include "support/paths.h"
 
@@ -27,41 +30,7 @@ using test::run_penumbra;
 const std::string kCornell = test::source_path("scenes/cornell-box.gltf");
 const std::string kBox = test::shared_path("scenes/khronos/Box.gltf");
 
-struct Pixels {
-    int width = 0, height = 0;
-    std::vector<std::string> channels;
-    std::vector<float> data;
-    std::string error;
-};
-
-Pixels read_pixels(const std::string& path) {
-    Pixels p;
-    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
-    if (!in) {
-        p.error = "cannot open " + path;
-        return p;
-    }
-    const OIIO::ImageSpec& s = in->spec();
-    p.width = s.width;
-    p.height = s.height;
-    p.channels = s.channelnames;
-    p.data.resize(size_t(s.width) * s.height * s.nchannels);
-    if (!in->read_image(0, 0, 0, s.nchannels, OIIO::TypeDesc::FLOAT, p.data.data()))
-        p.error = in->geterror();
-    return p;
-}
-
-// Every channel of every pixel, bit for bit.
-::testing::AssertionResult same_pixels(const std::string& a, const std::string& b) {
-    const Pixels pa = read_pixels(a), pb = read_pixels(b);
-    if (!pa.error.empty() || !pb.error.empty())
-        return ::testing::AssertionFailure() << pa.error << " " << pb.error;
-    if (pa.width != pb.width || pa.height != pb.height || pa.channels != pb.channels)
-        return ::testing::AssertionFailure() << a << " and " << b << " differ in size or channels";
-    if (std::memcmp(pa.data.data(), pb.data.data(), pa.data.size() * sizeof(float)) != 0)
-        return ::testing::AssertionFailure() << a << " and " << b << " differ in their pixels";
-    return ::testing::AssertionSuccess();
-}
+using test::same_pixels;
 
 std::string attribute(const std::string& exr, const std::string& name) {
     std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(exr);
@@ -185,8 +154,11 @@ TEST(FarmCli, TasksAndMergeWriteTheImagesOfRenderJob) {
     const test::CliResult ref = run_penumbra({"render", "--job", ref_job, "-q"});
     EXPECT_EQ(ref.status, 1) << ref.output;  // the broken scene
     // 3 + 5 bands, the broken scene, 3 frames in 2 tasks: 11 work items, run here one by
-    // one.
+    // one, each under another of the Embree ISAs this CPU has (as on a cluster of mixed
+    // nodes), while the reference ran under Embree's own choice.
+    const std::vector<std::string> isas = test::embree_isas();
     for (int i = 0; i < 11; ++i) {
+        const test::ScopedEmbreeIsa isa(isas.empty() ? "" : isas[i % isas.size()]);
         const test::CliResult t =
             run_penumbra({"farm", "task", farm_job, "--index", std::to_string(i)});
         EXPECT_EQ(t.status, i == 8 ? 1 : 0) << i << ": " << t.output;
