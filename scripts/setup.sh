@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages penumbra needs to build and run; with --test, also
-# those only the tests need. Idempotent: packages already present are skipped, and apt
+# those only the tests and benchmarks need. Idempotent: packages already present are skipped, and apt
 # is not touched when nothing is missing. Runs apt-get directly as root, through sudo
 # otherwise.
 set -euo pipefail
@@ -11,10 +11,12 @@ packages=(
     libopenimageio-dev openimageio-tools libopencolorio-dev
     libtinygltf-dev nlohmann-json3-dev libstb-dev
     libdraco-dev libmeshoptimizer-dev
-    libcli11-dev libgtest-dev libbenchmark-dev
+    libcli11-dev
 )
 if [ "${1:-}" = "--test" ]; then
     packages+=(
+        # The unit tests and the microbenchmarks (build/bin/penumbra_tests, penumbra_bench).
+        libgtest-dev libbenchmark-dev
         # The asan preset (scripts/sanitize.sh, scripts/fuzz.sh): clang with its sanitizer
         # and libFuzzer runtimes, and llvm-symbolizer for readable reports.
         clang libclang-rt-14-dev llvm-14

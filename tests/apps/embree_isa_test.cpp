@@ -1,6 +1,7 @@
 // Images that do not depend on Embree's code path: bundled and real scenes (static,
 // moving, instanced, alpha-masked, skinned, compressed) rendered under every Embree ISA
-// this CPU runs (PENUMBRA_EMBREE_CONFIG=isa=...) give the same EXR pixels, bit for bit.
+// this CPU runs (PENUMBRA_EMBREE_CONFIG=isa=...), and with glibc's FMA variants of its
+// maths functions switched off, give the same EXR pixels, bit for bit.
 // EmbreeAccel recomputes every hit with our own arithmetic; only the choice of triangle
 // on exact ties (coincident faces, a ray within rounding of a shared edge) is Embree's,
 // and none of these renders meets one (docs/conventions.md has the measured rates).
@@ -59,6 +60,21 @@ TEST(EmbreeIsa, RendersAreBitwiseIdenticalUnderEveryIsa) {
             const test::CliResult r = test::run_penumbra(args);
             ASSERT_EQ(r.status, 0) << scene.name << " under " << isa << ": " << r.output;
             outputs.push_back(out);
+        }
+        // glibc picks FMA or SSE2 variants of cosf and of the double exp, log, pow, sin,
+        // atan, tan at run time (they differ in a few inputs: 2 of 1.6e8 for cosf): the
+        // widest ISA again with glibc's FMA and AVX2 variants switched off.
+        {
+            const test::ScopedEmbreeIsa use(isas.back());
+            setenv("GLIBC_TUNABLES", "glibc.cpu.hwcaps=-AVX2,-FMA", 1);
+            const std::string out = dir.file(scene.name + "_nofma.exr");
+            std::vector<std::string> args = {"render", scene.path, "-o", out, "--width", "96",
+                                             "--spp", "8", "-q", "--no-preview"};
+            args.insert(args.end(), scene.args.begin(), scene.args.end());
+            const test::CliResult r = test::run_penumbra(args);
+            unsetenv("GLIBC_TUNABLES");
+            ASSERT_EQ(r.status, 0) << scene.name << " without FMA libm: " << r.output;
+            EXPECT_TRUE(test::same_pixels(outputs[0], out)) << scene.name << ": glibc without FMA";
         }
         for (size_t i = 1; i < outputs.size(); ++i)
             EXPECT_TRUE(test::same_pixels(outputs[0], outputs[i]))
