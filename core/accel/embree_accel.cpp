@@ -172,24 +172,24 @@ struct EmbreeAccel::Impl {
     // Embree computes t, u and v in float with approximate reciprocals (RCPPS, whose bits
     // differ between CPU vendors) and with or without FMA, by ISA; a moving instance's
     // transform also with approximate square roots. They are recomputed with our own
-    // arithmetic, exactly as BvhAccel computes a hit on the same triangle: the ray mapped
-    // into object space (instance_transform.h), the triangle at the ray's time, the
-    // watertight test's plane hit (triangle_intersect.h). The edge functions' signs are
-    // not checked: Embree has decided the hit, and within rounding of an edge the
-    // barycentrics may be a little negative. False where the ray is parallel to the
-    // triangle in float (no plane hit).
+    // arithmetic, as BvhAccel sees the same triangle: the ray mapped into object space
+    // (instance_transform.h), the triangle at the ray's time, triangle_plane_hit (its t is
+    // BvhAccel's to the bit). False where the ray is parallel to the triangle in float.
     bool plane_hit(const Ray& ray, uint32_t instance, uint32_t mesh_index, uint32_t prim,
                    TriangleHit* th) const {
-        const Placement& pl = placements[instance];
-        const Ray oray = pl.identity              ? ray
-                         : pl.motion == kStatic ? transform_ray(pl.to_object, ray)
-                                                : moving_object_ray(motion[pl.motion], ray);
         const TriangleMesh& mesh = scene->meshes[mesh_index];
         const uint32_t* idx = &mesh.indices[3 * size_t(prim)];
         Vec3 p[3];
-        for (int k = 0; k < 3; ++k) p[k] = position_at(mesh, idx[k], ray.time);
-        const TrianglePrecomp rt(oray);
-        return triangle_plane_hit(rt, p[0], p[1], p[2], triangle_edges(rt, p[0], p[1], p[2]), th);
+        if (mesh.motion_positions.empty()) {
+            for (int k = 0; k < 3; ++k) p[k] = mesh.positions[idx[k]];
+        } else {
+            for (int k = 0; k < 3; ++k) p[k] = position_at(mesh, idx[k], ray.time);
+        }
+        const Placement& pl = placements[instance];
+        if (pl.identity) return triangle_plane_hit(ray.o, ray.d, p[0], p[1], p[2], th);
+        const Ray oray = pl.motion == kStatic ? transform_ray(pl.to_object, ray)
+                                              : moving_object_ray(motion[pl.motion], ray);
+        return triangle_plane_hit(oray.o, oray.d, p[0], p[1], p[2], th);
     }
 
     // Where plane_hit has no answer, Embree's values stay.

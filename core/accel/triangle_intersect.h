@@ -39,44 +39,40 @@ struct TriangleHit {
     float t, b1, b2;
 };
 
-// The vertices relative to the ray origin and their scaled barycentrics: U weighs
-// vertex 0, V vertex 1, W vertex 2 (edge functions of the edges opposite each vertex, in
-// the sheared space where the ray is the +z axis).
-struct TriangleEdges {
-    Vec3 A, B, C;
-    float U, V, W;
-};
-
-inline TriangleEdges triangle_edges(const TrianglePrecomp& r, Vec3 p0, Vec3 p1, Vec3 p2) {
-    TriangleEdges e;
-    e.A = p0 - r.o;
-    e.B = p1 - r.o;
-    e.C = p2 - r.o;
-    const Vec3 &A = e.A, &B = e.B, &C = e.C;
+// Hits with tmin <= t <= tmax count, as in Embree 3's robust mode, which EmbreeAccel uses
+// (its Pluecker test checks tnear <= t <= tfar; the default Moeller test would exclude
+// t = tnear: kernels/geometry/triangle_intersector_{pluecker,moeller}.h). The test is on
+// the divided t, so the reported t itself obeys it. Both faces are hit (no culling).
+// Returns false for degenerate (zero-area) triangles and NaN input.
+inline bool intersect_triangle(const TrianglePrecomp& r, Vec3 p0, Vec3 p1, Vec3 p2, float tmin,
+                               float tmax, TriangleHit* hit) {
+    // Vertices relative to the ray origin, then sheared so the ray is the +z axis.
+    const Vec3 A = p0 - r.o, B = p1 - r.o, C = p2 - r.o;
     const float ax = A[r.kx] - r.sx * A[r.kz], ay = A[r.ky] - r.sy * A[r.kz];
     const float bx = B[r.kx] - r.sx * B[r.kz], by = B[r.ky] - r.sy * B[r.kz];
     const float cx = C[r.kx] - r.sx * C[r.kz], cy = C[r.ky] - r.sy * C[r.kz];
-    e.U = cx * by - cy * bx;
-    e.V = ax * cy - ay * cx;
-    e.W = bx * ay - by * ax;
+
+    // Scaled barycentrics: U weighs vertex 0, V vertex 1, W vertex 2 (edge functions of
+    // the edges opposite each vertex).
+    float U = cx * by - cy * bx;
+    float V = ax * cy - ay * cx;
+    float W = bx * ay - by * ax;
     // An edge function that rounds to exactly 0 cannot be trusted to have the sign the
     // neighbouring triangle sees: redo all three in double, where the products of floats
     // are exact (section 4 of the paper).
-    if (e.U == 0 || e.V == 0 || e.W == 0) {
-        e.U = static_cast<float>(double(cx) * by - double(cy) * bx);
-        e.V = static_cast<float>(double(ax) * cy - double(ay) * cx);
-        e.W = static_cast<float>(double(bx) * ay - double(by) * ax);
+    if (U == 0 || V == 0 || W == 0) {
+        U = static_cast<float>(double(cx) * by - double(cy) * bx);
+        V = static_cast<float>(double(ax) * cy - double(ay) * cx);
+        W = static_cast<float>(double(bx) * ay - double(by) * ax);
     }
-    return e;
-}
-
-// Where the ray meets the triangle's plane: t and the barycentrics, from the edge
-// functions whatever their signs (inside or not). False where the ray is parallel to the
-// triangle in the sheared projection (det = 0) or the input is NaN.
-inline bool triangle_plane_hit(const TrianglePrecomp& r, Vec3 p0, Vec3 p1, Vec3 p2,
-                               const TriangleEdges& e, TriangleHit* hit) {
-    const float det = e.U + e.V + e.W;
+    // Inside when all three have the same sign (either winding); zeros are on the edge
+    // and count. The negated comparisons also reject NaN.
+    const bool any_neg = U < 0 || V < 0 || W < 0;
+    const bool any_pos = U > 0 || V > 0 || W > 0;
+    if (any_neg && any_pos) return false;
+    const float det = U + V + W;
     if (det == 0 || std::isnan(det)) return false;
+
     // The paper's t interpolates the vertices' sheared z with the scaled barycentrics.
     // On slivers seen at a shallow angle det is tiny and the rounding of U, V, W is not,
     // so that t can be off by 1e-4 relative (measured on the chamfers of the Khronos
@@ -87,34 +83,43 @@ inline bool triangle_plane_hit(const TrianglePrecomp& r, Vec3 p0, Vec3 p1, Vec3 
     const float inv_det = 1.0f / det;
     const Vec3 n = cross(p1 - p0, p2 - p0);
     const float nd = dot(n, r.d);
+    float t;
     if (nd != 0) {
-        hit->t = dot(n, e.A) / nd;
+        t = dot(n, A) / nd;
     } else {
-        const float az = r.sz * e.A[r.kz], bz = r.sz * e.B[r.kz], cz = r.sz * e.C[r.kz];
-        hit->t = (e.U * az + e.V * bz + e.W * cz) * inv_det;
+        const float az = r.sz * A[r.kz], bz = r.sz * B[r.kz], cz = r.sz * C[r.kz];
+        t = (U * az + V * bz + W * cz) * inv_det;
     }
-    hit->b1 = e.V * inv_det;
-    hit->b2 = e.W * inv_det;
+    if (!(t >= tmin && t <= tmax)) return false;
+    hit->t = t;
+    hit->b1 = V * inv_det;
+    hit->b2 = W * inv_det;
     return true;
 }
 
-// Hits with tmin <= t <= tmax count, as in Embree 3's robust mode, which EmbreeAccel uses
-// (its Pluecker test checks tnear <= t <= tfar; the default Moeller test would exclude
-// t = tnear: kernels/geometry/triangle_intersector_{pluecker,moeller}.h). The test is on
-// the divided t, so the reported t itself obeys it. Both faces are hit (no culling).
-// Returns false for degenerate (zero-area) triangles and NaN input.
-inline bool intersect_triangle(const TrianglePrecomp& r, Vec3 p0, Vec3 p1, Vec3 p2, float tmin,
-                               float tmax, TriangleHit* hit) {
-    const TriangleEdges e = triangle_edges(r, p0, p1, p2);
-    // Inside when all three have the same sign (either winding); zeros are on the edge
-    // and count. The negated comparisons also reject NaN.
-    const bool any_neg = e.U < 0 || e.V < 0 || e.W < 0;
-    const bool any_pos = e.U > 0 || e.V > 0 || e.W > 0;
-    if (any_neg && any_pos) return false;
-    TriangleHit h;
-    if (!triangle_plane_hit(r, p0, p1, p2, e, &h)) return false;
-    if (!(h.t >= tmin && h.t <= tmax)) return false;
-    *hit = h;
+}  // namespace penumbra
+
+namespace penumbra {
+
+// Where a ray meets a triangle that traversal has already chosen (Embree's hits): t and
+// the barycentrics, whatever the hit point's side of the edges (within rounding of an
+// edge they may be a little negative). t is intersect_triangle's own (the distance to the
+// plane, the same operations); b1, b2 are Moeller and Trumbore's ratios of triple
+// products (1997), a third of the watertight test's cost. False where the ray is
+// parallel to the plane in float or the input is NaN.
+inline bool triangle_plane_hit(Vec3 o, Vec3 d, Vec3 p0, Vec3 p1, Vec3 p2, TriangleHit* hit) {
+    const Vec3 e1 = p1 - p0, e2 = p2 - p0;
+    const Vec3 n = cross(e1, e2);
+    const float nd = dot(n, d);
+    const Vec3 pvec = cross(d, e2);
+    const float det = dot(e1, pvec);
+    if (nd == 0 || det == 0 || std::isnan(nd) || std::isnan(det)) return false;
+    const Vec3 A = p0 - o;
+    hit->t = dot(n, A) / nd;
+    const float inv_det = 1.0f / det;
+    const Vec3 tvec = o - p0;
+    hit->b1 = dot(tvec, pvec) * inv_det;
+    hit->b2 = dot(d, cross(tvec, e1)) * inv_det;
     return true;
 }
 
