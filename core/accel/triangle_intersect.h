@@ -104,23 +104,25 @@ namespace penumbra {
 // Where a ray meets a triangle that traversal has already chosen (Embree's hits): t and
 // the barycentrics, whatever the hit point's side of the edges (within rounding of an
 // edge they may be a little negative). t is intersect_triangle's own (the distance to the
-// plane, the same operations); b1, b2 are Moeller and Trumbore's ratios of triple
-// products (1997), a third of the watertight test's cost. False where the ray is
-// parallel to the plane in float or the input is NaN.
+// plane, the same operations). The barycentrics are those of the point o + t d, projected
+// on the plane: measured from the ray's origin instead (Moeller-Trumbore), a ray that
+// grazes a face at 4e-4 radians from 10 units away put the point 1.4e-3 along the ray
+// from where t says (float's 1e-7 relative, over the sine), which a volume's chord
+// inherits. False where the ray is parallel to the plane in float, the triangle is
+// degenerate, or the input is NaN.
 inline bool triangle_plane_hit(Vec3 o, Vec3 d, Vec3 p0, Vec3 p1, Vec3 p2, TriangleHit* hit) {
     const Vec3 e1 = p1 - p0, e2 = p2 - p0;
     const Vec3 n = cross(e1, e2);
-    const float nd = dot(n, d);
-    const Vec3 pvec = cross(d, e2);
-    const float det = dot(e1, pvec);
-    if (nd == 0 || det == 0 || std::isnan(nd) || std::isnan(det)) return false;
+    const float nd = dot(n, d), nn = dot(n, n);
+    if (nd == 0 || !(nn > 0) || std::isnan(nd)) return false;
     const Vec3 A = p0 - o;
-    hit->t = dot(n, A) / nd;
-    const float inv_det = 1.0f / det;
-    const Vec3 tvec = o - p0;
-    hit->b1 = dot(tvec, pvec) * inv_det;
-    hit->b2 = dot(d, cross(tvec, e1)) * inv_det;
-    return true;
+    const float t = dot(n, A) / nd;
+    const Vec3 q = (o + d * t) - p0;
+    const float inv_nn = 1.0f / nn;
+    hit->t = t;
+    hit->b1 = dot(cross(q, e2), n) * inv_nn;
+    hit->b2 = dot(cross(e1, q), n) * inv_nn;
+    return std::isfinite(hit->b1) && std::isfinite(hit->b2);
 }
 
 }  // namespace penumbra
