@@ -106,10 +106,12 @@ struct EmbreeAccel::Impl {
     // instID -> object index.
     std::vector<uint32_t> instance_object;
     // Top-level geomIDs from instance_count on are flattened meshes, with their facets
-    // (null for a mesh whose normals move).
+    // (null for a mesh whose normals move) and the planes of their world-space triangles
+    // as Embree traces them.
     struct FlatMesh {
         uint32_t instance, mesh;
         const Facet* facets;
+        const TrianglePlane* planes;
     };
     uint32_t instance_count = 0;
     std::vector<FlatMesh> flat_ids;
@@ -130,6 +132,9 @@ struct EmbreeAccel::Impl {
     // normal and the flat-shading flag instead of recomputing them (16 bytes a triangle,
     // within EmbreeBuildOptions::flatten_budget triangles).
     std::vector<std::vector<Facet>> facets;
+    // And their triangles' planes, for refine: 48 bytes a triangle, where recomputing
+    // them at every hit cost 7% of the instructions of a Cornell box's render.
+    std::vector<std::vector<TrianglePlane>> planes;
 
     void throw_if_error(const char* what) {
         std::lock_guard<std::mutex> lock(errors.mutex);
@@ -139,42 +144,41 @@ struct EmbreeAccel::Impl {
 
     // The Hit of an Embree hit record. Embree picks the triangle; where the ray meets it
     // is recomputed here (refine), so that no reported value depends on which code path
-    // Embree ran. A flattened mesh's hit is on its object-space triangle, as through an
-    // instance.
-    // The Scene instance and mesh of an Embree hit's ids.
-    void ids_of(unsigned inst_id, unsigned geom_id, uint32_t* instance, uint32_t* mesh) const {
-        if (inst_id == RTC_INVALID_GEOMETRY_ID) {
-            const FlatMesh& ids = flat_ids[geom_id - instance_count];
-            *instance = ids.instance;
-            *mesh = ids.mesh;
-        } else {
-            *instance = inst_id;
-            *mesh = mesh_ids[instance_object[inst_id]][geom_id];
-        }
-    }
-
+    // Embree ran.
     Hit hit(const Ray& ray, unsigned inst_id, unsigned geom_id, unsigned prim, float u, float v,
             float t) const {
         Hit h;
         h.t = t;
-        ids_of(inst_id, geom_id, &h.instance, &h.mesh);
-        if (inst_id == RTC_INVALID_GEOMETRY_ID) {
-            const FlatMesh& ids = flat_ids[geom_id - instance_count];
-            if (ids.facets) h.facet = ids.facets + prim;
-        }
         h.prim = prim;
         h.b1 = u;
         h.b2 = v;
-        refine(ray, &h);
+        if (inst_id == RTC_INVALID_GEOMETRY_ID) {
+            const FlatMesh& ids = flat_ids[geom_id - instance_count];
+            h.instance = ids.instance;
+            h.mesh = ids.mesh;
+            if (ids.facets) h.facet = ids.facets + prim;
+            TriangleHit th;
+            if (triangle_plane_hit(ids.planes[prim], ray.o, ray.d, &th)) set(th, &h);
+        } else {
+            h.instance = inst_id;
+            h.mesh = mesh_ids[instance_object[inst_id]][geom_id];
+            refine(ray, &h);
+        }
         return h;
+    }
+    static void set(const TriangleHit& th, Hit* h) {
+        h->t = th.t;
+        h->b1 = th.b1;
+        h->b2 = th.b2;
     }
 
     // Embree computes t, u and v in float with approximate reciprocals (RCPPS, whose bits
     // differ between CPU vendors) and with or without FMA, by ISA; a moving instance's
     // transform also with approximate square roots. They are recomputed with our own
-    // arithmetic, as BvhAccel sees the same triangle: the ray mapped into object space
-    // (instance_transform.h), the triangle at the ray's time, triangle_plane_hit (its t is
-    // BvhAccel's to the bit). False where the ray is parallel to the triangle in float.
+    // arithmetic (triangle_plane_hit): on a flattened mesh's world-space triangle, as
+    // Embree traces it (its precomputed plane); else on the object-space triangle at the
+    // ray's time, with the ray mapped into object space as BvhAccel maps it
+    // (instance_transform.h). False where the ray is parallel to the triangle in float.
     bool plane_hit(const Ray& ray, uint32_t instance, uint32_t mesh_index, uint32_t prim,
                    TriangleHit* th) const {
         const TriangleMesh& mesh = scene->meshes[mesh_index];
@@ -192,13 +196,10 @@ struct EmbreeAccel::Impl {
         return triangle_plane_hit(oray.o, oray.d, p[0], p[1], p[2], th);
     }
 
-    // Where plane_hit has no answer, Embree's values stay.
+    // An instanced hit's plane_hit; where it has no answer, Embree's values stay.
     void refine(const Ray& ray, Hit* h) const {
         TriangleHit th;
-        if (!plane_hit(ray, h->instance, h->mesh, h->prim, &th)) return;
-        h->t = th.t;
-        h->b1 = th.b1;
-        h->b2 = th.b2;
+        if (plane_hit(ray, h->instance, h->mesh, h->prim, &th)) set(th, h);
     }
 
     ~Impl() {
@@ -238,14 +239,10 @@ void refined_t_filter(const RTCFilterFunctionNArguments* args) {
     for (unsigned i = 0; i < args->N; ++i) {
         if (!args->valid[i]) continue;
         const Ray& ray = q->rays[RTCRayN_id(args->ray, args->N, i)];
-        uint32_t instance, mesh;
-        q->impl->ids_of(RTCHitN_instID(args->hit, args->N, i, 0),
-                        RTCHitN_geomID(args->hit, args->N, i), &instance, &mesh);
-        TriangleHit th;
-        if (q->impl->plane_hit(ray, instance, mesh, RTCHitN_primID(args->hit, args->N, i),
-                               &th) &&
-            !(th.t >= ray.tmin && th.t <= ray.tmax))
-            args->valid[i] = 0;
+        const Hit h = q->impl->hit(ray, RTCHitN_instID(args->hit, args->N, i, 0),
+                                   RTCHitN_geomID(args->hit, args->N, i),
+                                   RTCHitN_primID(args->hit, args->N, i), 0, 0, RTCRayN_tfar(args->ray, args->N, i));
+        if (!(h.t >= ray.tmin && h.t <= ray.tmax)) args->valid[i] = 0;
     }
 }
 
@@ -287,6 +284,21 @@ std::vector<bool> flattened_instances(const Scene& scene, const EmbreeBuildOptio
     for (size_t ii = 0; ii < scene.instances.size(); ++ii)
         flat[ii] = flat_object[scene.instances[ii].object];
     return flat;
+}
+
+// The planes of a static mesh's triangles placed by to_world (nullptr: as they are),
+// with each vertex transformed as new_triangles gives it to Embree.
+std::vector<TrianglePlane> world_planes(const TriangleMesh& mesh, const Transform* to_world) {
+    std::vector<TrianglePlane> planes(mesh.triangle_count());
+    for (size_t i = 0; i < planes.size(); ++i) {
+        Vec3 p[3];
+        for (int k = 0; k < 3; ++k) {
+            p[k] = mesh.positions[mesh.indices[3 * i + k]];
+            if (to_world) p[k] = to_world->point(p[k]);
+        }
+        planes[i] = make_triangle_plane(p[0], p[1], p[2]);
+    }
+    return planes;
 }
 
 }  // namespace
@@ -414,8 +426,11 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
                 im.facets.push_back(make_facets(mesh, inst.to_world));
                 const std::vector<Facet>& facets = im.facets.back();
                 m_facet_bytes += facets.size() * sizeof(Facet);
+                im.planes.push_back(world_planes(mesh, identity ? nullptr : &inst.to_world));
+                m_facet_bytes += im.planes.back().size() * sizeof(TrianglePlane);
                 im.flat_ids.push_back({static_cast<uint32_t>(ii), mesh_index,
-                                       facets.empty() ? nullptr : facets.data()});
+                                       facets.empty() ? nullptr : facets.data(),
+                                       im.planes.back().data()});
             }
             ++m_flattened;
             continue;

@@ -101,28 +101,43 @@ inline bool intersect_triangle(const TrianglePrecomp& r, Vec3 p0, Vec3 p1, Vec3 
 
 namespace penumbra {
 
-// Where a ray meets a triangle that traversal has already chosen (Embree's hits): t and
-// the barycentrics, whatever the hit point's side of the edges (within rounding of an
-// edge they may be a little negative). t is intersect_triangle's own (the distance to the
-// plane, the same operations). The barycentrics are those of the point o + t d, projected
-// on the plane: measured from the ray's origin instead (Moeller-Trumbore), a ray that
-// grazes a face at 4e-4 radians from 10 units away put the point 1.4e-3 along the ray
-// from where t says (float's 1e-7 relative, over the sine), which a volume's chord
-// inherits. False where the ray is parallel to the plane in float, the triangle is
-// degenerate, or the input is NaN.
-inline bool triangle_plane_hit(Vec3 o, Vec3 d, Vec3 p0, Vec3 p1, Vec3 p2, TriangleHit* hit) {
+// A triangle as triangle_plane_hit reads it: vertex 0, the plane's normal n = e1 x e2,
+// and the dual vectors g1 = (e2 x n) / |n|^2, g2 = (n x e1) / |n|^2, so that a point q on
+// the plane has barycentrics b1 = (q - p0).g1, b2 = (q - p0).g2. 48 bytes, precomputed
+// where one triangle is hit many times (EmbreeAccel's flattened meshes).
+struct TrianglePlane {
+    Vec3 p0, n, g1, g2;
+};
+
+inline TrianglePlane make_triangle_plane(Vec3 p0, Vec3 p1, Vec3 p2) {
     const Vec3 e1 = p1 - p0, e2 = p2 - p0;
     const Vec3 n = cross(e1, e2);
-    const float nd = dot(n, d), nn = dot(n, n);
-    if (nd == 0 || !(nn > 0) || std::isnan(nd)) return false;
-    const Vec3 A = p0 - o;
-    const float t = dot(n, A) / nd;
-    const Vec3 q = (o + d * t) - p0;
-    const float inv_nn = 1.0f / nn;
+    const float inv_nn = 1.0f / dot(n, n);  // inf for a degenerate triangle: g is not finite
+    return {p0, n, cross(e2, n) * inv_nn, cross(n, e1) * inv_nn};
+}
+
+// Where a ray meets a triangle that traversal has already chosen (Embree's hits): t and
+// the barycentrics, whatever the hit point's side of the edges (within rounding of an
+// edge they may be a little negative). t is the distance to the plane, n.(p0 - o) / n.d
+// (intersect_triangle's formula). The barycentrics are those of the point o + t d on
+// the plane: measured from the ray's origin instead (Moeller-Trumbore), a ray that grazes
+// a face at 4e-4 radians from 10 units away put the point 1.4e-3 along the ray from where
+// t says (float's 1e-7 relative, over the sine), which a volume's chord inherits. False
+// where the ray is parallel to the plane in float, the triangle is degenerate, or the
+// input is NaN.
+inline bool triangle_plane_hit(const TrianglePlane& tp, Vec3 o, Vec3 d, TriangleHit* hit) {
+    const float nd = dot(tp.n, d);
+    if (nd == 0 || std::isnan(nd)) return false;
+    const float t = dot(tp.n, tp.p0 - o) / nd;
+    const Vec3 q = (o + d * t) - tp.p0;
     hit->t = t;
-    hit->b1 = dot(cross(q, e2), n) * inv_nn;
-    hit->b2 = dot(cross(e1, q), n) * inv_nn;
-    return std::isfinite(hit->b1) && std::isfinite(hit->b2);
+    hit->b1 = dot(q, tp.g1);
+    hit->b2 = dot(q, tp.g2);
+    return std::isfinite(t) && std::isfinite(hit->b1) && std::isfinite(hit->b2);
+}
+
+inline bool triangle_plane_hit(Vec3 o, Vec3 d, Vec3 p0, Vec3 p1, Vec3 p2, TriangleHit* hit) {
+    return triangle_plane_hit(make_triangle_plane(p0, p1, p2), o, d, hit);
 }
 
 }  // namespace penumbra

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/accel/accel_check.h"
+#include "core/accel/triangle_intersect.h"
 #include "core/facet.h"
 #include "core/sampling/rng.h"
 #include "core/sampling/warp.h"
@@ -238,7 +239,7 @@ TEST(EmbreeAccel, FlattenedHitsCarryFacetsThatGiveTheSameSurfacePoints) {
     options.flatten_triangles = 1000;
     const EmbreeAccel accel(scene, options);
     ASSERT_EQ(accel.flattened(), 3u);
-    EXPECT_EQ(accel.facet_bytes(), (528 + 2 * 12) * sizeof(Facet));
+    EXPECT_EQ(accel.facet_bytes(), (528 + 2 * 12) * (sizeof(Facet) + sizeof(TrianglePlane)));
 
     const std::vector<CheckRay> rays = test::agreement_rays(scene, accel, 5000, 2000);
     const TraceResults traced = trace_rays(accel, rays);
