@@ -486,17 +486,27 @@ void fill_ray(const Ray& ray, RTCRay& r) {
 }  // namespace
 
 std::optional<Hit> EmbreeAccel::do_intersect(const Ray& ray) const {
+    return closest_hit(ray, needs_filter(*m_impl, ray));
+}
+
+// Unfiltered, the refined t of Embree's closest hit can still fall outside [tmin, tmax]
+// where Embree's own t was inside by its rounding (a hit within rounding of the origin):
+// the query is then asked again with the filter, which rejects that candidate, so a
+// reported hit always lies in the ray's interval by our t.
+std::optional<Hit> EmbreeAccel::closest_hit(const Ray& ray, bool filtered) const {
     QueryContext ctx;
     init_context(&ctx, &ray, m_impl.get());
-    if (needs_filter(*m_impl, ray)) ctx.embree.filter = refined_t_filter;
+    if (filtered) ctx.embree.filter = refined_t_filter;
     RTCRayHit rh;
     fill_ray(ray, rh.ray);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(m_impl->top, &ctx.embree, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    return m_impl->hit(ray, rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v,
-                       rh.ray.tfar);
+    const Hit h = m_impl->hit(ray, rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, rh.hit.u,
+                              rh.hit.v, rh.ray.tfar);
+    if (!filtered && !(h.t >= ray.tmin && h.t <= ray.tmax)) return closest_hit(ray, true);
+    return h;
 }
 
 bool EmbreeAccel::do_occluded(const Ray& ray) const {
@@ -543,8 +553,12 @@ void EmbreeAccel::intersect8(const Ray (&rays)[8], std::optional<Hit> (&hits)[8]
             hits[i].reset();
             continue;
         }
-        hits[i] = m_impl->hit(rays[i], rh.hit.instID[0][i], rh.hit.geomID[i], rh.hit.primID[i],
-                              rh.hit.u[i], rh.hit.v[i], rh.ray.tfar[i]);
+        const Hit h = m_impl->hit(rays[i], rh.hit.instID[0][i], rh.hit.geomID[i],
+                                  rh.hit.primID[i], rh.hit.u[i], rh.hit.v[i], rh.ray.tfar[i]);
+        if (!ctx.embree.filter && !(h.t >= rays[i].tmin && h.t <= rays[i].tmax))
+            hits[i] = closest_hit(rays[i], true);  // as in closest_hit
+        else
+            hits[i] = h;
     }
 }
 

@@ -65,6 +65,9 @@ protected:
     bool do_occluded(const Ray& ray) const override;
 
 private:
+    // rtcIntersect1, with refined_t_filter (embree_accel.cpp) when filtered.
+    std::optional<Hit> closest_hit(const Ray& ray, bool filtered) const;
+
     std::unique_ptr<Impl> m_impl;
     AccelStats m_stats;
     size_t m_copied_bytes = 0;
