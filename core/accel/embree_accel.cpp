@@ -11,8 +11,7 @@
 #include <mutex>
 #include <string>
 
-#include "core/accel/instance_transform.h"
-#include "core/accel/triangle_intersect.h"
+#include "core/accel/hit_refiner.h"
 #include "core/error.h"
 #include "core/facet.h"
 #include "core/log.h"
@@ -115,17 +114,8 @@ struct EmbreeAccel::Impl {
     };
     uint32_t instance_count = 0;
     std::vector<FlatMesh> flat_ids;
-    // How each Scene instance maps world rays to object space, as our own accelerators
-    // map them (instance_transform.h), to recompute Embree's hits.
-    static constexpr uint32_t kStatic = ~0u;
-    struct Placement {
-        WorldToObject to_object;
-        uint32_t motion = kStatic;  // index into motion, or kStatic
-        bool identity = false;
-    };
-    std::vector<Placement> placements;
-    std::vector<std::vector<QuatDecomposition>> motion;
-    const Scene* scene = nullptr;
+    // Recomputes hits on instanced triangles (flattened ones use their planes below).
+    HitRefiner refiner;
     // Some instance moves or some instanced mesh deforms: every query is filtered.
     bool filter_every_query = false;
     // The flattened meshes' facets: per hit on them, make_surface_point reads the world
@@ -175,31 +165,12 @@ struct EmbreeAccel::Impl {
     // Embree computes t, u and v in float with approximate reciprocals (RCPPS, whose bits
     // differ between CPU vendors) and with or without FMA, by ISA; a moving instance's
     // transform also with approximate square roots. They are recomputed with our own
-    // arithmetic (triangle_plane_hit): on a flattened mesh's world-space triangle, as
-    // Embree traces it (its precomputed plane); else on the object-space triangle at the
-    // ray's time, with the ray mapped into object space as BvhAccel maps it
-    // (instance_transform.h). False where the ray is parallel to the triangle in float.
-    bool plane_hit(const Ray& ray, uint32_t instance, uint32_t mesh_index, uint32_t prim,
-                   TriangleHit* th) const {
-        const TriangleMesh& mesh = scene->meshes[mesh_index];
-        const uint32_t* idx = &mesh.indices[3 * size_t(prim)];
-        Vec3 p[3];
-        if (mesh.motion_positions.empty()) {
-            for (int k = 0; k < 3; ++k) p[k] = mesh.positions[idx[k]];
-        } else {
-            for (int k = 0; k < 3; ++k) p[k] = position_at(mesh, idx[k], ray.time);
-        }
-        const Placement& pl = placements[instance];
-        if (pl.identity) return triangle_plane_hit(ray.o, ray.d, p[0], p[1], p[2], th);
-        const Ray oray = pl.motion == kStatic ? transform_ray(pl.to_object, ray)
-                                              : moving_object_ray(motion[pl.motion], ray);
-        return triangle_plane_hit(oray.o, oray.d, p[0], p[1], p[2], th);
-    }
-
-    // An instanced hit's plane_hit; where it has no answer, Embree's values stay.
+    // arithmetic: on a flattened mesh's world-space triangle as Embree traces it (its
+    // precomputed plane), else by the refiner. Where that has no answer (a ray parallel to
+    // the triangle in float), Embree's values stay.
     void refine(const Ray& ray, Hit* h) const {
         TriangleHit th;
-        if (plane_hit(ray, h->instance, h->mesh, h->prim, &th)) set(th, h);
+        if (refiner.plane_hit(ray, h->instance, h->mesh, h->prim, &th)) set(th, h);
     }
 
     ~Impl() {
@@ -286,21 +257,6 @@ std::vector<bool> flattened_instances(const Scene& scene, const EmbreeBuildOptio
     return flat;
 }
 
-// The planes of a static mesh's triangles placed by to_world (nullptr: as they are),
-// with each vertex transformed as new_triangles gives it to Embree.
-std::vector<TrianglePlane> world_planes(const TriangleMesh& mesh, const Transform* to_world) {
-    std::vector<TrianglePlane> planes(mesh.triangle_count());
-    for (size_t i = 0; i < planes.size(); ++i) {
-        Vec3 p[3];
-        for (int k = 0; k < 3; ++k) {
-            p[k] = mesh.positions[mesh.indices[3 * i + k]];
-            if (to_world) p[k] = to_world->point(p[k]);
-        }
-        planes[i] = make_triangle_plane(p[0], p[1], p[2]);
-    }
-    return planes;
-}
-
 }  // namespace
 
 EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
@@ -314,7 +270,6 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
                       (options.compact ? RTC_SCENE_FLAG_COMPACT : 0);
     const auto start = std::chrono::steady_clock::now();
     Impl& im = *m_impl;
-    im.scene = &scene;
     im.device = new_device(options.device_config);
     rtcSetDeviceErrorFunction(im.device, error_callback, &im.errors);
     rtcSetDeviceMemoryMonitorFunction(im.device, memory_callback, &im.memory);
@@ -401,17 +356,7 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
     rtcSetSceneBuildQuality(im.top, quality);
     im.instance_count = static_cast<uint32_t>(scene.instances.size());
     im.instance_object.resize(scene.instances.size());
-    im.placements.resize(scene.instances.size());
-    for (size_t ii = 0; ii < scene.instances.size(); ++ii) {
-        const Instance& inst = scene.instances[ii];
-        Impl::Placement& pl = im.placements[ii];
-        pl.to_object = world_to_object(inst.to_world.matrix());
-        pl.identity = inst.motion.empty() && inst.to_world.matrix().is_identity();
-        if (!inst.motion.empty()) {
-            pl.motion = static_cast<uint32_t>(im.motion.size());
-            im.motion.push_back(decompose_steps(inst.motion));
-        }
-    }
+    im.refiner = HitRefiner(scene);
     for (size_t ii = 0; ii < scene.instances.size(); ++ii) {
         const Instance& inst = scene.instances[ii];
         im.instance_object[ii] = inst.object;
@@ -426,7 +371,7 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
                 im.facets.push_back(make_facets(mesh, inst.to_world));
                 const std::vector<Facet>& facets = im.facets.back();
                 m_facet_bytes += facets.size() * sizeof(Facet);
-                im.planes.push_back(world_planes(mesh, identity ? nullptr : &inst.to_world));
+                im.planes.push_back(world_triangle_planes(mesh, identity ? nullptr : &inst.to_world));
                 m_facet_bytes += im.planes.back().size() * sizeof(TrianglePlane);
                 im.flat_ids.push_back({static_cast<uint32_t>(ii), mesh_index,
                                        facets.empty() ? nullptr : facets.data(),
