@@ -8,6 +8,7 @@
 
 #include "io/gltf_accessor.h"
 #include "io/gltf_context.h"
+#include "core/math/portable_math.h"
 
 namespace penumbra {
 
@@ -24,9 +25,9 @@ void slerp(const double* q0, const double* q1, double s, double* out) {
     const double a = std::acos(std::min(1.0, std::abs(d)));
     double w0 = 1 - s, w1 = sign * s;
     // Nearly equal keys: sin(a) -> 0, and the weights tend to those of a lerp.
-    if (std::sin(a) > 1e-9) {
-        w0 = std::sin(a * (1 - s)) / std::sin(a);
-        w1 = sign * std::sin(a * s) / std::sin(a);
+    if (portable_sin(a) > 1e-9) {
+        w0 = portable_sin(a * (1 - s)) / portable_sin(a);
+        w1 = sign * portable_sin(a * s) / portable_sin(a);
     }
     double len2 = 0;
     for (int i = 0; i < 4; ++i) {

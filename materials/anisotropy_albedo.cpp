@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "materials/specular_albedo.h"
+#include "core/math/portable_math.h"
 
 namespace penumbra {
 
@@ -73,7 +74,7 @@ AnisotropyAlbedoTable* build_table(MicrofacetType type) {
                 // At mu = 0 the view is tangent; just above it, the limit.
                 const float mu = std::max(node_mu(i), 1e-4f);
                 const float sin_theta = std::sqrt(1 - mu * mu), phi = node_phi(l);
-                const Vec3 wo(sin_theta * std::cos(phi), sin_theta * std::sin(phi), mu);
+                const Vec3 wo(sin_theta * portable_cos(phi), sin_theta * portable_sin(phi), mu);
                 t->ab[j][k][l][i] = integrate_specular_albedo(dist, wo, n_radial, n_angular);
             }
     });

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "core/math/vec.h"
+#include "core/math/portable_math.h"
 
 namespace penumbra {
 
@@ -73,9 +74,9 @@ public:
         const Vec3 t1 = lensq > 0 ? Vec3(-vh.y, vh.x, 0) / std::sqrt(lensq) : Vec3(1, 0, 0);
         const Vec3 t2 = cross(vh, t1);
         const float r = std::sqrt(u.x), phi = 2 * kPi * u.y;
-        const float p1 = r * std::cos(phi);
+        const float p1 = r * portable_cos(phi);
         const float s = 0.5f * (1 + vh.z);
-        const float p2 = (1 - s) * std::sqrt(std::max(0.0f, 1 - p1 * p1)) + s * r * std::sin(phi);
+        const float p2 = (1 - s) * std::sqrt(std::max(0.0f, 1 - p1 * p1)) + s * r * portable_sin(phi);
         const Vec3 nh = t1 * p1 + t2 * p2 + vh * std::sqrt(std::max(0.0f, 1 - p1 * p1 - p2 * p2));
         return normalize(Vec3(m_alpha * nh.x, m_alpha_y * nh.y, std::max(1e-6f, nh.z)));
     }
@@ -85,7 +86,7 @@ public:
         const float t = std::sqrt(u.x / std::max(1 - u.x, 1e-12f));
         const float tan_x = m_alpha * t, tan_y = m_alpha_y * t;
         const float phi = 2 * kPi * u.y;
-        return normalize(Vec3(tan_x * std::cos(phi), tan_y * std::sin(phi), 1));
+        return normalize(Vec3(tan_x * portable_cos(phi), tan_y * portable_sin(phi), 1));
     }
 
 private:
@@ -177,7 +178,7 @@ public:
         const float t = std::sqrt(-std::log1p(-std::min(u.x, 1 - 1e-7f)));
         const float tan_x = m_alpha * t, tan_y = m_alpha_y * t;
         const float phi = 2 * kPi * u.y;
-        return normalize(Vec3(tan_x * std::cos(phi), tan_y * std::sin(phi), 1));
+        return normalize(Vec3(tan_x * portable_cos(phi), tan_y * portable_sin(phi), 1));
     }
 
 private:

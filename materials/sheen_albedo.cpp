@@ -10,6 +10,7 @@
 #include "core/math/gauss_legendre.h"
 #include "core/math/vec.h"
 #include "materials/sheen.h"
+#include "core/math/portable_math.h"
 
 namespace penumbra {
 
@@ -53,7 +54,7 @@ float integrate_sheen_albedo(float mu, float r, int n_cos, int n_phi) {
     double sum = 0;
     for (int k = 0; k < n_phi; ++k) {
         const double phi = kPi * (k + 0.5) / n_phi;
-        const float c_phi = float(std::cos(phi)), s_phi = float(std::sin(phi));
+        const float c_phi = float(portable_cos(phi)), s_phi = float(portable_sin(phi));
         for (int x = 0; x < n_cos; ++x) {
             const float c = float(xs[x]), s = std::sqrt(std::max(0.0f, 1 - c * c));
             const Vec3 wi(s * c_phi, s * s_phi, c);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/texture.h"
+#include "core/math/portable_math.h"
 
 namespace penumbra {
 
@@ -24,7 +25,7 @@ float align_anisotropy_frame(const Scene& scene, const MaterialDesc& m, const Su
     // The direction in tangent space: (cos, sin) of the rotation, or the texture's RG
     // direction (normalized) rotated by it, counter-clockwise (the spec's
     // mat2(c, s, -s, c) * direction).
-    const float c = std::cos(m.anisotropy_rotation), s = std::sin(m.anisotropy_rotation);
+    const float c = portable_cos(m.anisotropy_rotation), s = portable_sin(m.anisotropy_rotation);
     Vec2 dir(c, s);
     if (m.anisotropy_texture.valid()) {
         const Vec4 t = texel(scene, m.anisotropy_texture, sp);

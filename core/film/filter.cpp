@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <vector>
+#include "core/math/portable_math.h"
 
 namespace penumbra {
 
@@ -68,7 +69,7 @@ float BlackmanHarrisFilter::eval_1d(float x) const {
     const float t = (x + radius()) / (2 * radius());
     const float a0 = 0.35875f, a1 = 0.48829f, a2 = 0.14128f, a3 = 0.01168f;
     const float w = 2 * kPi * t;
-    return a0 - a1 * std::cos(w) + a2 * std::cos(2 * w) - a3 * std::cos(3 * w);
+    return a0 - a1 * portable_cos(w) + a2 * portable_cos(2 * w) - a3 * portable_cos(3 * w);
 }
 
 std::unique_ptr<Filter> make_filter(const std::string& name) {

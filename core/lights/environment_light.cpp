@@ -5,6 +5,7 @@
 
 #include "core/math/atan2.h"
 #include "core/sampling/warp.h"
+#include "core/math/portable_math.h"
 
 namespace penumbra {
 
@@ -15,8 +16,8 @@ EnvironmentLight::EnvironmentLight(Image image, float intensity, float rotation_
                                    float scene_radius, EnvironmentSampling sampling)
     : m_image(std::move(image)), m_scale(intensity), m_radius(scene_radius) {
     const float r = rotation_degrees * kPi / 180.0f;
-    m_cos_rot = std::cos(r);
-    m_sin_rot = std::sin(r);
+    m_cos_rot = portable_cos(r);
+    m_sin_rot = portable_sin(r);
     const int w = m_image.width, h = m_image.height;
     std::vector<float> func(size_t(w) * h);
     m_radiance.resize(size_t(w) * h);
@@ -25,7 +26,7 @@ EnvironmentLight::EnvironmentLight(Image image, float intensity, float rotation_
     std::vector<float> sin_theta(size_t(h), 0.0f);
     double weighted = 0, weights = 0;  // for the mean luminance over the sphere
     for (int y = 0; y < h; ++y) {
-        sin_theta[y] = std::sin(kPi * (y + 0.5f) / h);
+        sin_theta[y] = portable_sin(kPi * (y + 0.5f) / h);
         for (int x = 0; x < w; ++x) {
             func[size_t(y) * w + x] = luminance(m_image.rgba(x, y).xyz()) * sin_theta[y];
             weighted += func[size_t(y) * w + x];
@@ -68,8 +69,8 @@ Vec2 EnvironmentLight::direction_to_uv(Vec3 w) const {
 
 Vec3 EnvironmentLight::uv_to_direction(Vec2 uv) const {
     const float theta = uv.y * kPi, phi = (uv.x - 0.5f) * 2 * kPi;
-    const float s = std::sin(theta);
-    const float x = -s * std::cos(phi), z = -s * std::sin(phi), y = std::cos(theta);
+    const float s = portable_sin(theta);
+    const float x = -s * portable_cos(phi), z = -s * portable_sin(phi), y = portable_cos(theta);
     return {m_cos_rot * x + m_sin_rot * z, y, -m_sin_rot * x + m_cos_rot * z};
 }
 
@@ -82,7 +83,7 @@ Spectrum EnvironmentLight::texel_radiance(Vec2 uv) const {
 
 float EnvironmentLight::uv_pdf(Vec2 uv) const {
     // Jacobian of (u, v) -> direction: 2 pi^2 sin(theta).
-    const float sin_theta = std::sin(uv.y * kPi);
+    const float sin_theta = portable_sin(uv.y * kPi);
     if (!(sin_theta > 0)) return 0;
     return m_dist.pdf(uv) / (2 * kPi * kPi * sin_theta);
 }

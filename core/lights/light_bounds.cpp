@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include "core/math/portable_math.h"
 
 namespace penumbra {
 
@@ -23,7 +24,7 @@ float sin_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
 
 // Rodrigues' rotation of v about unit axis k by angle theta.
 Vec3 rotate(Vec3 v, Vec3 k, float theta) {
-    const float c = std::cos(theta), s = std::sin(theta);
+    const float c = portable_cos(theta), s = portable_sin(theta);
     return v * c + cross(k, v) * s + k * (dot(k, v) * (1 - c));
 }
 
@@ -46,7 +47,7 @@ void merge_cones(Vec3 wa, float cos_a, Vec3 wb, float cos_b, Vec3* w, float* cos
         return;
     }
     *w = normalize(rotate(wa, normalize(axis), theta_o - theta_a));
-    *cos_o = std::cos(theta_o);
+    *cos_o = portable_cos(theta_o);
 }
 
 }  // namespace

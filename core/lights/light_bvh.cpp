@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "core/math/float4.h"
+#include "core/math/portable_math.h"
 
 namespace penumbra {
 
@@ -24,7 +25,7 @@ float split_cost(const LightBounds& b, int axis) {
     const float sin_o = std::sqrt(std::max(0.0f, 1 - b.cos_theta_o * b.cos_theta_o));
     const float m_omega =
         2 * kPi * (1 - b.cos_theta_o) + kPi / 2 *
-                                            (2 * theta_w * sin_o - std::cos(theta_o - 2 * theta_w) -
+                                            (2 * theta_w * sin_o - portable_cos(theta_o - 2 * theta_w) -
                                              2 * theta_o * sin_o + b.cos_theta_o);
     const Vec3 d = b.hi - b.lo;
     const float area = 2 * (d.x * d.y + d.y * d.z + d.z * d.x);

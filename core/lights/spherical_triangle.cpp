@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include "core/math/portable_math.h"
 
 namespace penumbra {
 
@@ -95,9 +96,9 @@ std::optional<Vec3> sample_spherical_triangle(const Vec3 v[3], Vec3 p, Vec2 u) {
     // in [0, A], which fixes the angle at c' ...
     const double A_pi = t.alpha + t.beta + t.gamma;  // area + pi
     const double Ap_pi = kPiD + u.x * (A_pi - kPiD);
-    const double cos_alpha = std::cos(t.alpha), sin_alpha = std::sin(t.alpha);
-    const double sin_phi = std::sin(Ap_pi) * cos_alpha - std::cos(Ap_pi) * sin_alpha;
-    const double cos_phi = std::cos(Ap_pi) * cos_alpha + std::sin(Ap_pi) * sin_alpha;
+    const double cos_alpha = portable_cos(t.alpha), sin_alpha = portable_sin(t.alpha);
+    const double sin_phi = portable_sin(Ap_pi) * cos_alpha - portable_cos(Ap_pi) * sin_alpha;
+    const double cos_phi = portable_cos(Ap_pi) * cos_alpha + portable_sin(Ap_pi) * sin_alpha;
     const double k1 = cos_phi + cos_alpha;
     const double k2 = sin_phi - sin_alpha * dot(t.a, t.b);
     // ... then solve for the cosine of the arc a c' (Arvo's eq. 8).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include "core/math/portable_math.h"
 
 namespace penumbra {
 
@@ -10,8 +11,8 @@ SpotLight::SpotLight(Vec3 position, Vec3 direction, Spectrum intensity, float in
     : m_p(position), m_axis(normalize(direction)), m_I(intensity) {
     // KHR_lights_punctual: scale = 1 / max(0.001, cos(inner) - cos(outer)),
     // offset = -cos(outer) * scale, attenuation = clamp(cd * scale + offset, 0, 1)^2.
-    m_cos_outer = std::cos(outer_cone);
-    m_scale = 1.0f / std::max(0.001f, std::cos(inner_cone) - m_cos_outer);
+    m_cos_outer = portable_cos(outer_cone);
+    m_scale = 1.0f / std::max(0.001f, portable_cos(inner_cone) - m_cos_outer);
     m_offset = -m_cos_outer * m_scale;
 }
 
@@ -46,7 +47,7 @@ std::optional<LightBounds> SpotLight::bounds() const {
     // The outer cone, widened by 1e-3 rad so rounding at its edge never zeroes a
     // receiver the falloff still reaches; no spread beyond it (theta_e = 0).
     b.cos_theta_o =
-        std::cos(std::min(std::acos(std::clamp(m_cos_outer, -1.0f, 1.0f)) + 1e-3f, kPi));
+        portable_cos(std::min(std::acos(std::clamp(m_cos_outer, -1.0f, 1.0f)) + 1e-3f, kPi));
     b.cos_theta_e = 1;
     return b;
 }

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <vector>
+#include "core/math/portable_math.h"
 
 namespace penumbra {
 
@@ -14,7 +15,7 @@ inline void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w
     w.resize(n);
     const double pi = std::acos(-1.0);
     for (int i = 0; i < n; ++i) {
-        double z = std::cos(pi * (i + 0.75) / (n + 0.5)), dp = 1;
+        double z = portable_cos(pi * (i + 0.75) / (n + 0.5)), dp = 1;
         for (int it = 0; it < 100; ++it) {
             double p1 = 1, p0 = 0;
             for (int j = 1; j <= n; ++j) {

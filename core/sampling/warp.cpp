@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include "core/math/portable_math.h"
 
 namespace penumbra {
 
@@ -14,7 +15,7 @@ Vec2 square_to_concentric_disk(Vec2 u) {
     return warp_detail::concentric_disk(u, &radius);
 }
 
-float polygon_area(int blades) { return 0.5f * blades * std::sin(2 * kPi / blades); }
+float polygon_area(int blades) { return 0.5f * blades * portable_sin(2 * kPi / blades); }
 
 Vec2 square_to_polygon(Vec2 u, int blades, float rotation) {
     // All wedges have equal area, so choose one uniformly and reuse the leftover of u.x.
@@ -25,7 +26,7 @@ Vec2 square_to_polygon(Vec2 u, int blades, float rotation) {
     const float a1 = rotation + 2 * kPi * (k + 1) / blades;
     // Uniform point in the triangle (center, v0, v1).
     const Vec2 b = square_to_triangle({ux, u.y});
-    const Vec2 v0{std::cos(a0), std::sin(a0)}, v1{std::cos(a1), std::sin(a1)};
+    const Vec2 v0{portable_cos(a0), portable_sin(a0)}, v1{portable_cos(a1), portable_sin(a1)};
     return v0 * b.x + v1 * b.y;
 }
 
@@ -33,21 +34,21 @@ Vec3 square_to_uniform_sphere(Vec2 u) {
     const float z = 1 - 2 * u.x;
     const float r = std::sqrt(std::max(0.0f, 1 - z * z));
     const float phi = 2 * kPi * u.y;
-    return {r * std::cos(phi), r * std::sin(phi), z};
+    return {r * portable_cos(phi), r * portable_sin(phi), z};
 }
 
 Vec3 square_to_uniform_hemisphere(Vec2 u) {
     const float z = u.x;
     const float r = std::sqrt(std::max(0.0f, 1 - z * z));
     const float phi = 2 * kPi * u.y;
-    return {r * std::cos(phi), r * std::sin(phi), z};
+    return {r * portable_cos(phi), r * portable_sin(phi), z};
 }
 
 Vec3 square_to_uniform_cone(Vec2 u, float cos_max) {
     const float cos_theta = (1 - u.x) + u.x * cos_max;
     const float sin_theta = std::sqrt(std::max(0.0f, 1 - cos_theta * cos_theta));
     const float phi = 2 * kPi * u.y;
-    return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+    return {sin_theta * portable_cos(phi), sin_theta * portable_sin(phi), cos_theta};
 }
 
 float uniform_cone_pdf(float cos_max) { return 1.0f / (2 * kPi * (1 - cos_max)); }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/math/vec.h"
+#include "core/math/portable_math.h"
 
 namespace penumbra {
 
@@ -29,7 +30,7 @@ struct TextureRef {
         const float x = p.x * scale.x, y = p.y * scale.y;
         if (rotation == 0) return {x + offset.x, y + offset.y};
         // The spec's matrix rows: (cos, sin) and (-sin, cos).
-        const float c = std::cos(rotation), s = std::sin(rotation);
+        const float c = portable_cos(rotation), s = portable_sin(rotation);
         return {c * x + s * y + offset.x, -s * x + c * y + offset.y};
     }
 };

@@ -61,9 +61,9 @@ TEST(EmbreeIsa, RendersAreBitwiseIdenticalUnderEveryIsa) {
             ASSERT_EQ(r.status, 0) << scene.name << " under " << isa << ": " << r.output;
             outputs.push_back(out);
         }
-        // glibc picks FMA or SSE2 variants of cosf and of the double exp, log, pow, sin,
-        // atan, tan at run time (they differ in a few inputs: 2 of 1.6e8 for cosf): the
-        // widest ISA again with glibc's FMA and AVX2 variants switched off.
+        // glibc picks FMA or SSE2 variants of its maths functions at run time, and some
+        // round differently for a few arguments (docs/conventions.md): the widest ISA
+        // again with glibc's FMA and AVX2 variants switched off.
         {
             const test::ScopedEmbreeIsa use(isas.back());
             setenv("GLIBC_TUNABLES", "glibc.cpu.hwcaps=-AVX2,-FMA", 1);
