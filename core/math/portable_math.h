@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <initializer_list>
 #include <limits>
 
@@ -17,15 +18,17 @@ namespace penumbra {
 
 namespace portable_detail {
 
-// x = n pi/2 + r, |r| <= pi/4 (a little more where x * 2/pi rounds); q = n mod 4.
+// x = n pi/2 + r, |r| <= pi/4 (a little more where x * 2/pi rounds); q = n mod 4. For
+// |x| <= 2^30 (the caller's range): n by the 1.5 x 2^52 trick, which rounds to an
+// integer in two exact additions (std::floor is a call on baseline x86-64).
 inline double reduce_half_pi(double x, int* q) {
     constexpr double kTwoOverPi = 6.36619772367581382433e-01;
     constexpr double kPio2_1 = 1.57079632673412561417e+00;   // first 33 bits of pi/2
     constexpr double kPio2_2 = 6.07710050630396597660e-11;   // next 33 bits
     constexpr double kPio2_2t = 2.02226624879595063154e-21;  // pi/2 - kPio2_1 - kPio2_2
-    const double n = std::floor(x * kTwoOverPi + 0.5);
-    const double m = n - 4.0 * std::floor(n * 0.25);  // n mod 4, exactly
-    *q = static_cast<int>(m);
+    constexpr double kRound = 0x1.8p52;
+    const double n = (x * kTwoOverPi + kRound) - kRound;
+    *q = static_cast<int>(static_cast<int64_t>(n) & 3);
     return ((x - n * kPio2_1) - n * kPio2_2) - n * kPio2_2t;
 }
 
