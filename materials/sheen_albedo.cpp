@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "core/math/gauss_legendre.h"
+#include "core/math/portable_math.h"
 #include "core/math/vec.h"
 #include "materials/sheen.h"
-#include "core/math/portable_math.h"
 
 namespace penumbra {
 
@@ -29,7 +29,6 @@ float row_roughness(int j) {
     const float r_min = CharlieSheen::kMinRoughness;
     return r_min + (1 - r_min) * (j / float(kRows - 1));
 }
-
 
 Table build_table() {
     Table t;

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/texture.h"
 #include "core/math/portable_math.h"
+#include "core/texture.h"
 
 namespace penumbra {
 

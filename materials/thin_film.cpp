@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+
 #include "core/math/portable_math.h"
 
 namespace penumbra {
@@ -35,7 +36,8 @@ Spectrum thin_film_sensitivity(double opd, Spectrum shift) {
                  portable_exp(-phase * phase * var[c]);
     // X has a second, short-wavelength lobe.
     xyz[0] += 9.7470e-14 * std::sqrt(2 * M_PI * 4.5282e+09) *
-              portable_cos(2.2399e+06 * phase + shift[0]) * portable_exp(-4.5282e+09 * phase * phase);
+              portable_cos(2.2399e+06 * phase + shift[0]) *
+              portable_exp(-4.5282e+09 * phase * phase);
     for (double& v : xyz) v /= 1.0685e-7;
     // XYZ to linear Rec.709 (sRGB primaries, D65).
     return {float(3.2404542 * xyz[0] - 1.5371385 * xyz[1] - 0.4985314 * xyz[2]),

@@ -16,8 +16,8 @@ HitRefiner::HitRefiner(const Scene& scene) : m_scene(&scene) {
     }
 }
 
-bool HitRefiner::plane_hit(const Ray& ray, uint32_t instance, uint32_t mesh_index,
-                           uint32_t prim, TriangleHit* hit) const {
+bool HitRefiner::plane_hit(const Ray& ray, uint32_t instance, uint32_t mesh_index, uint32_t prim,
+                           TriangleHit* hit) const {
     const TriangleMesh& mesh = m_scene->meshes[mesh_index];
     const uint32_t* idx = &mesh.indices[3 * size_t(prim)];
     Vec3 p[3];

@@ -27,8 +27,8 @@ inline Ray transform_ray(const WorldToObject& w, const Ray& ray) {
     const auto& m = w.m;
     Ray r = ray;
     for (int i = 0; i < 3; ++i) {
-        r.o[i] = static_cast<float>(m[i][0] * ray.o.x + m[i][1] * ray.o.y + m[i][2] * ray.o.z +
-                                    m[i][3]);
+        r.o[i] =
+            static_cast<float>(m[i][0] * ray.o.x + m[i][1] * ray.o.y + m[i][2] * ray.o.z + m[i][3]);
         r.d[i] = static_cast<float>(m[i][0] * ray.d.x + m[i][1] * ray.d.y + m[i][2] * ray.d.z);
     }
     return r;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <vector>
+
 #include "core/math/portable_math.h"
 
 namespace penumbra {

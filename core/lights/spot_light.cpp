@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+
 #include "core/math/portable_math.h"
 
 namespace penumbra {

@@ -75,10 +75,22 @@ inline void portable_sincos(double x, double* s, double* c) {
     const double r = portable_detail::reduce_half_pi(x, &q);
     const double sr = portable_detail::kernel_sin(r), cr = portable_detail::kernel_cos(r);
     switch (q) {
-        case 0: *s = sr; *c = cr; break;
-        case 1: *s = cr; *c = -sr; break;
-        case 2: *s = -sr; *c = -cr; break;
-        default: *s = -cr; *c = sr; break;
+        case 0:
+            *s = sr;
+            *c = cr;
+            break;
+        case 1:
+            *s = cr;
+            *c = -sr;
+            break;
+        case 2:
+            *s = -sr;
+            *c = -cr;
+            break;
+        default:
+            *s = -cr;
+            *c = sr;
+            break;
     }
 }
 inline double portable_sin(double x) {
@@ -114,8 +126,8 @@ inline double portable_exp(double x) {
     const double k = std::floor(x * kInvLn2 + 0.5);
     const double r = (x - k * kLn2Hi) - k * kLn2Lo;
     double p = 1.0 / 6227020800.0;  // 1/13!
-    for (double d : {479001600.0, 39916800.0, 3628800.0, 362880.0, 40320.0, 5040.0, 720.0,
-                     120.0, 24.0, 6.0, 2.0, 1.0, 1.0})
+    for (double d : {479001600.0, 39916800.0, 3628800.0, 362880.0, 40320.0, 5040.0, 720.0, 120.0,
+                     24.0, 6.0, 2.0, 1.0, 1.0})
         p = p * r + 1.0 / d;
     return std::ldexp(p, static_cast<int>(k));
 }

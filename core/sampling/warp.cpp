@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+
 #include "core/math/portable_math.h"
 
 namespace penumbra {

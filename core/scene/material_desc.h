@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "core/math/vec.h"
 #include "core/math/portable_math.h"
+#include "core/math/vec.h"
 
 namespace penumbra {
 

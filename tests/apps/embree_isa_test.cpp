@@ -31,7 +31,8 @@ std::vector<IsaScene> isa_scenes() {
         {"motion", test::source_path("scenes/motion-blur.gltf"), blur},
         {"instances", test::source_path("scenes/instances.gltf"), {}},
         {"dof", test::source_path("scenes/dof.gltf"), {}},
-        {"box_animated", test::shared_path("scenes/khronos/BoxAnimated.gltf"),
+        {"box_animated",
+         test::shared_path("scenes/khronos/BoxAnimated.gltf"),
          {"--shutter-open", "0", "--shutter-close", "0.5"}},
         {"flight_helmet", test::shared_path("scenes/wild/FlightHelmet/FlightHelmet.gltf"), {}},
         {"golf_ball", test::shared_path("scenes/wild/GolfBall/GolfBall.glb"), {}},
@@ -54,8 +55,8 @@ TEST(EmbreeIsa, RendersAreBitwiseIdenticalUnderEveryIsa) {
         for (const std::string& isa : isas) {
             const test::ScopedEmbreeIsa use(isa);
             const std::string out = dir.file(scene.name + "_" + isa + ".exr");
-            std::vector<std::string> args = {"render", scene.path, "-o", out, "--width", "96",
-                                             "--spp", "8", "-q", "--no-preview"};
+            std::vector<std::string> args = {"render", scene.path, "-o", out,  "--width",
+                                             "96",     "--spp",    "8",  "-q", "--no-preview"};
             args.insert(args.end(), scene.args.begin(), scene.args.end());
             const test::CliResult r = test::run_penumbra(args);
             ASSERT_EQ(r.status, 0) << scene.name << " under " << isa << ": " << r.output;
@@ -68,8 +69,8 @@ TEST(EmbreeIsa, RendersAreBitwiseIdenticalUnderEveryIsa) {
             const test::ScopedEmbreeIsa use(isas.back());
             setenv("GLIBC_TUNABLES", "glibc.cpu.hwcaps=-AVX2,-FMA", 1);
             const std::string out = dir.file(scene.name + "_nofma.exr");
-            std::vector<std::string> args = {"render", scene.path, "-o", out, "--width", "96",
-                                             "--spp", "8", "-q", "--no-preview"};
+            std::vector<std::string> args = {"render", scene.path, "-o", out,  "--width",
+                                             "96",     "--spp",    "8",  "-q", "--no-preview"};
             args.insert(args.end(), scene.args.begin(), scene.args.end());
             const test::CliResult r = test::run_penumbra(args);
             unsetenv("GLIBC_TUNABLES");

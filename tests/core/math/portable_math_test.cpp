@@ -57,8 +57,7 @@ TEST(PortableMath, DoubleSinCosAndExpAreAccurate) {
     for (int i = 0; i < 200000; ++i) {
         const double x = angle(rng);
         const long double xl = x;
-        worst_trig = std::max({worst_trig,
-                               double(std::fabs(portable_sin(x) - std::sin(xl))),
+        worst_trig = std::max({worst_trig, double(std::fabs(portable_sin(x) - std::sin(xl))),
                                double(std::fabs(portable_cos(x) - std::cos(xl)))});
         const double y = power(rng);
         const long double ey = std::exp(static_cast<long double>(y));
