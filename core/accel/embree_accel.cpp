@@ -122,8 +122,9 @@ struct EmbreeAccel::Impl {
     // normal and the flat-shading flag instead of recomputing them (16 bytes a triangle,
     // within EmbreeBuildOptions::flatten_budget triangles).
     std::vector<std::vector<Facet>> facets;
-    // And their triangles' planes, for refine: 48 bytes a triangle, where recomputing
-    // them at every hit cost 7% of the instructions of a Cornell box's render.
+    // And their triangles' planes, for refine: 48 bytes a triangle, which save about 4%
+    // of a Cornell box's render instructions over recomputing them at every hit
+    // (docs/performance.md, "Hits recomputed from Embree's choice of triangle").
     std::vector<std::vector<TrianglePlane>> planes;
 
     void throw_if_error(const char* what) {
@@ -210,9 +211,9 @@ void refined_t_filter(const RTCFilterFunctionNArguments* args) {
     for (unsigned i = 0; i < args->N; ++i) {
         if (!args->valid[i]) continue;
         const Ray& ray = q->rays[RTCRayN_id(args->ray, args->N, i)];
-        const Hit h = q->impl->hit(ray, RTCHitN_instID(args->hit, args->N, i, 0),
-                                   RTCHitN_geomID(args->hit, args->N, i),
-                                   RTCHitN_primID(args->hit, args->N, i), 0, 0, RTCRayN_tfar(args->ray, args->N, i));
+        const Hit h = q->impl->hit(
+            ray, RTCHitN_instID(args->hit, args->N, i, 0), RTCHitN_geomID(args->hit, args->N, i),
+            RTCHitN_primID(args->hit, args->N, i), 0, 0, RTCRayN_tfar(args->ray, args->N, i));
         if (!(h.t >= ray.tmin && h.t <= ray.tmax)) args->valid[i] = 0;
     }
 }
@@ -221,10 +222,6 @@ void refined_t_filter(const RTCFilterFunctionNArguments* args) {
 bool needs_filter(const EmbreeAccel::Impl& im, const Ray& ray) {
     return im.filter_every_query || ray.tmin > 0;
 }
-
-}  // namespace
-
-namespace {
 
 // Which instances are traced as world-space triangles (EmbreeBuildOptions::flatten):
 // those of rigid objects whose every placement is static, small in all.
@@ -371,7 +368,8 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
                 im.facets.push_back(make_facets(mesh, inst.to_world));
                 const std::vector<Facet>& facets = im.facets.back();
                 m_facet_bytes += facets.size() * sizeof(Facet);
-                im.planes.push_back(world_triangle_planes(mesh, identity ? nullptr : &inst.to_world));
+                im.planes.push_back(
+                    world_triangle_planes(mesh, identity ? nullptr : &inst.to_world));
                 m_facet_bytes += im.planes.back().size() * sizeof(TrianglePlane);
                 im.flat_ids.push_back({static_cast<uint32_t>(ii), mesh_index,
                                        facets.empty() ? nullptr : facets.data(),
@@ -401,9 +399,8 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
     m_stats.name = "embree";
     m_stats.build_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    m_stats.object_scenes = static_cast<size_t>(
-        std::count_if(im.object_scenes.begin(), im.object_scenes.end(),
-                      [](RTCScene s) { return s != nullptr; }));
+    m_stats.object_scenes = static_cast<size_t>(std::count_if(
+        im.object_scenes.begin(), im.object_scenes.end(), [](RTCScene s) { return s != nullptr; }));
     m_stats.instances = scene.instances.size() - m_flattened;
     m_stats.memory_bytes =
         static_cast<size_t>(std::max<int64_t>(0, im.memory.load())) + m_facet_bytes;
@@ -498,8 +495,8 @@ void EmbreeAccel::intersect8(const Ray (&rays)[8], std::optional<Hit> (&hits)[8]
             hits[i].reset();
             continue;
         }
-        const Hit h = m_impl->hit(rays[i], rh.hit.instID[0][i], rh.hit.geomID[i],
-                                  rh.hit.primID[i], rh.hit.u[i], rh.hit.v[i], rh.ray.tfar[i]);
+        const Hit h = m_impl->hit(rays[i], rh.hit.instID[0][i], rh.hit.geomID[i], rh.hit.primID[i],
+                                  rh.hit.u[i], rh.hit.v[i], rh.ray.tfar[i]);
         if (!ctx.embree.filter && !(h.t >= rays[i].tmin && h.t <= rays[i].tmax))
             hits[i] = closest_hit(rays[i], true);  // as in closest_hit
         else
