@@ -1,21 +1,13 @@
 #include "integrators/first_hit.h"
 
-#include "core/sampling/rng.h"
-#include "core/surface_point.h"
-#include "materials/material.h"
-
 namespace penumbra {
 
-AovRecord first_hit_aovs(const Ray& camera_ray, const RenderContext& ctx, uint64_t key) {
-    AovRecord rec;
-    Ray ray = camera_ray;
-    Rng rng(key);
+std::optional<VisibleSurface> first_visible_surface(Ray& ray, const RenderContext& ctx, Rng& rng) {
     // As the path integrator does: a bounded number of see-through layers.
     for (int layer = 0; layer <= 256; ++layer) {
         const std::optional<Hit> hit = ctx.accel.intersect(ray);
-        if (!hit) return rec;
+        if (!hit) return std::nullopt;
         const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
-        const Vec3 wo = normalize(-ray.d);
         if (ctx.has_alpha) {
             const float opacity = surface_opacity(ctx.scene, sp);
             if (opacity < 1 && (opacity <= 0 || rng.next_float() >= opacity)) {
@@ -24,14 +16,22 @@ AovRecord first_hit_aovs(const Ray& camera_ray, const RenderContext& ctx, uint64
                 continue;
             }
         }
-        const ShadingData sd = shade(ctx.scene, sp, wo, ctx.materials);
-        rec.hit = true;
-        rec.albedo = sd.base_color;
-        rec.normal = sd.frame.n;
-        rec.position = sp.p;
-        rec.depth = length(sp.p - camera_ray.o);
-        return rec;
+        return VisibleSurface{sp, shade(ctx.scene, sp, normalize(-ray.d), ctx.materials)};
     }
+    return std::nullopt;
+}
+
+AovRecord first_hit_aovs(const Ray& camera_ray, const RenderContext& ctx, uint64_t key) {
+    AovRecord rec;
+    Ray ray = camera_ray;
+    Rng rng(key);
+    const std::optional<VisibleSurface> s = first_visible_surface(ray, ctx, rng);
+    if (!s) return rec;
+    rec.hit = true;
+    rec.albedo = s->sd.base_color;
+    rec.normal = s->sd.frame.n;
+    rec.position = s->sp.p;
+    rec.depth = length(s->sp.p - camera_ray.o);
     return rec;
 }
 

@@ -1,19 +1,33 @@
-// The first-hit AOVs of a camera sample: what the camera ray sees first (albedo,
-// shading normal, distance, position), found with its own ray cast only when AOVs are
-// asked for, so integrators stay unaware of them.
+// What a camera ray sees first: the first surface it does not pass through (shared by
+// the first-hit AOVs and the denoiser's guides), and the first-hit AOVs (albedo, shading
+// normal, distance, position), found with their own ray casts only when asked for, so
+// integrators stay unaware of them.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "core/film/aov.h"
+#include "core/sampling/rng.h"
+#include "core/surface_point.h"
 #include "integrators/integrator.h"
+#include "materials/material.h"
 
 namespace penumbra {
 
-// Traces ray (a camera ray) to its first visible surface. Alpha-masked and blended
-// surfaces are passed through stochastically, as the integrators do, with a random
-// number hashed from `key` (seed, pixel, sample) rather than drawn from the sampler, so
-// the beauty's sample streams are the same with and without AOVs.
+struct VisibleSurface {
+    SurfacePoint sp;
+    ShadingData sd;  // shaded for wo = -ray.d
+};
+
+// Traces `ray` to the first surface it does not pass through; empty if it escapes.
+// Alpha-masked and blended surfaces are passed through stochastically, as the
+// integrators do, with numbers from rng; `ray` is left as the segment that hit.
+std::optional<VisibleSurface> first_visible_surface(Ray& ray, const RenderContext& ctx, Rng& rng);
+
+// The first-hit AOVs of ray (a camera ray). The random numbers are hashed from `key`
+// (seed, pixel, sample) rather than drawn from the sampler, so the beauty's sample
+// streams are the same with and without AOVs.
 AovRecord first_hit_aovs(const Ray& ray, const RenderContext& ctx, uint64_t key);
 
 }  // namespace penumbra

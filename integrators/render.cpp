@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "core/sampling/hash.h"
 #include "integrators/adaptive_sampling.h"
+#include "integrators/denoise_guide.h"
 #include "integrators/first_hit.h"
 
 namespace penumbra {
@@ -34,12 +35,12 @@ bool render_samples(const RenderContext& ctx, const Camera& camera, const Integr
     CHECK(!active || active->size() == size_t(w) * h);
     const Filter& filter = shared_filter(options.filter);
     // Built for the whole budget: stratified and Sobol index their strata by the sample
-    // index within [0, spp), whatever the pass. With the error estimate, even and odd
-    // sample indices are two independently seeded sample streams of half the budget
-    // each (sample 2i is stream 0's i-th, 2i+1 stream 1's): the difference of two
+    // index within [0, spp), whatever the pass. With two halves (the error AOV, denoising),
+    // even and odd sample indices are two independently seeded sample streams of half the
+    // budget each (sample 2i is stream 0's i-th, 2i+1 stream 1's): the difference of two
     // independent randomised estimates is a valid error estimate for any sampler, where
     // the spread of one QMC pixel's samples is not (Owen 2013, ch. 17, "replicates").
-    const bool halves = film.aovs().has(Aov::Error);
+    const bool halves = film.aovs().splits_halves();
     const uint32_t budget = std::max(options.spp, last);
     std::unique_ptr<Sampler> prototypes[2] = {
         make_sampler(options.sampler, halves ? (budget + 1) / 2 : budget, options.seed),
@@ -67,6 +68,7 @@ bool render_samples(const RenderContext& ctx, const Camera& camera, const Integr
     // AOVs get their own instantiation of the tile loop, so a render without them does
     // no AOV work per sample.
     const bool first_hit = film.aovs().needs_first_hit();
+    const bool guides = film.aovs().has(Aov::Denoise);
     // Pixels go in blocks of 4 x 2. For an integrator that takes a traced first hit, a
     // full block's camera rays of one sample index are traced as one packet: coherent
     // rays cost Embree about a third as much each in a packet as one by one
@@ -109,9 +111,9 @@ bool render_samples(const RenderContext& ctx, const Camera& camera, const Integr
         auto add = [&](int x, int y, uint32_t s, const Ray& ray, const Spectrum& L,
                        const FilterSample& fs) {
             if constexpr (decltype(with_aovs)::value) {
-                AovRecord aov = first_hit
-                                    ? first_hit_aovs(ray, ctx, hash_values(options.seed, x, y, s))
-                                    : AovRecord{};
+                const uint64_t key = hash_values(options.seed, x, y, s);
+                AovRecord aov = first_hit ? first_hit_aovs(ray, ctx, key) : AovRecord{};
+                if (guides) aov.guide = denoise_guide(ray, ctx, key);
                 aov.odd = (s & 1) != 0;
                 film.add_sample(x, y, L, fs.weight, aov);
             } else {

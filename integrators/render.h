@@ -40,7 +40,8 @@ struct RenderOptions {
     const std::atomic<int>* interrupts = nullptr;
     BatchProgress* batch = nullptr;  // the overall bar of a batch, or nullptr
     // AOVs to accumulate besides the beauty (the film render() returns has them). The
-    // first-hit ones cost one more camera ray per sample; rays traced include it.
+    // first-hit ones cost one more camera ray per sample, Aov::Denoise's guides one or
+    // more; rays traced include them.
     AovSet aovs;
     // Adaptive sampling (integrators/adaptive_sampling.h): > 0 stops each pixel once its
     // estimated relative standard error is below this, after at least min_spp samples
@@ -77,11 +78,13 @@ struct RenderStats {
 // Adds sample indices [first, last) of every pixel to film (the camera's size), in
 // index order per pixel: rendering [0,k) then [k,n) equals [0,n) bit for bit. With
 // `active` (one flag per pixel, row-major), only the flagged pixels take samples. A film
-// with the error AOV draws odd sample indices from a second, independent sample stream.
+// with the error AOV or denoising (AovSet::splits_halves) draws odd sample indices from a
+// second, independent sample stream; one that denoises also traces each sample's guide
+// (integrators/denoise_guide.h).
 // Returns false when a second interrupt abandoned the pass; the film is then inconsistent.
-bool render_samples(const RenderContext& ctx, const Camera& camera,
-                    const Integrator& integrator, const RenderOptions& options, Film& film,
-                    uint32_t first, uint32_t last, ProgressReporter* progress = nullptr,
+bool render_samples(const RenderContext& ctx, const Camera& camera, const Integrator& integrator,
+                    const RenderOptions& options, Film& film, uint32_t first, uint32_t last,
+                    ProgressReporter* progress = nullptr,
                     const std::vector<uint8_t>* active = nullptr);
 
 // How many samples per pixel the next pass should render when `done` took `elapsed`

@@ -23,6 +23,11 @@ enum class Aov : uint32_t {
     // of its samples (core/film/error_estimate.h). Not a pure observer: asking for it
     // draws odd sample indices from a second sample stream, so it is not part of "all".
     Error = 64,
+    // Not an AOV of its own, and parse_aovs does not name it: the denoiser's input
+    // (Film::denoise_input). The film keeps the guide features' sums and the beauty's
+    // squares, over all samples and over the odd-indexed ones; like Error, it draws the
+    // odd sample indices from a second sample stream.
+    Denoise = 128,
 };
 
 class AovSet {
@@ -39,16 +44,29 @@ public:
         return (m_bits & (uint32_t(Aov::Albedo) | uint32_t(Aov::Normal) | uint32_t(Aov::Depth) |
                           uint32_t(Aov::Position))) != 0;
     }
+    // Error or denoising: the samples form two independently seeded halves.
+    bool splits_halves() const { return has(Aov::Error) || has(Aov::Denoise); }
 
 private:
     uint32_t m_bits = 0;
 };
 
 // "albedo,normal,depth,position,variance,samples,error" (any subset, any order; "all"
-// for every one but error, which changes the sample streams). Throws std::invalid_argument naming an unknown entry.
+// for every one but error, which changes the sample streams). Throws
+// std::invalid_argument naming an unknown entry.
 AovSet parse_aovs(const std::string& list);
 // The names parse_aovs accepts, in Aov order.
 const std::vector<std::string>& aov_names();
+
+// The denoiser's guide features of one camera sample (core/denoise/denoise_input.h): the
+// first non-specular surface's albedo, tinted by the specular surfaces on the way, its
+// shading normal facing the incoming ray, and the length of the path to it. A sample
+// that escapes leaves all three zero.
+struct GuideRecord {
+    Spectrum albedo;
+    Vec3 normal;
+    float depth = 0;
+};
 
 // What one camera sample saw first. Misses leave hit false; the film then counts them
 // as zero albedo and normal and leaves them out of depth and position.
@@ -60,6 +78,7 @@ struct AovRecord {
     float depth = 0;
     // The sample's index is odd: it belongs to the second half of the error estimate.
     bool odd = false;
+    GuideRecord guide;  // only read by a film that denoises
 };
 
 }  // namespace penumbra

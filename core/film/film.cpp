@@ -5,8 +5,31 @@
 #include <limits>
 
 #include "core/convergence.h"
+#include "core/error.h"
 
 namespace penumbra {
+
+namespace {
+
+// A sample's guide record as denoise_input.h's channels.
+std::array<float, kGuideChannels> guide_channels(const GuideRecord& g) {
+    static_assert(kGuideAlbedo == 0 && kGuideNormal == 3 && kGuideDepth == 6);
+    return {g.albedo.x, g.albedo.y, g.albedo.z, g.normal.x, g.normal.y, g.normal.z, g.depth};
+}
+
+// The variance of a weighted mean from its sums (sum w x, sum w x^2, sum w, sum w^2): the
+// weighted variance over the effective sample count (sum w)^2 / sum w^2, less one. For
+// equal weights exactly the unbiased s^2 / n (a ratio estimator's variance); 0 below two
+// samples.
+double variance_of_mean(double sum, double square, double sw, double sw2) {
+    const double n_eff = sw2 > 0 ? sw * sw / sw2 : 0;
+    if (!(n_eff > 1.0 + 1e-9)) return 0;
+    const double mean = sum / sw;
+    const double var = std::max(0.0, square / sw - mean * mean);
+    return var / (n_eff - 1);
+}
+
+}  // namespace
 
 Film::Film(int width, int height, AovSet aovs)
     : m_width(width), m_height(height), m_pixels(size_t(width) * height), m_aovs(aovs) {
@@ -17,14 +40,20 @@ Film::Film(int width, int height, AovSet aovs)
     if (aovs.has(Aov::Depth)) m_aov.depth.assign(n, 0.0);
     if (aovs.has(Aov::Position)) m_aov.position.assign(n, Sum3{});
     if (aovs.has(Aov::Depth) || aovs.has(Aov::Position)) m_aov.hit_weight.assign(n, 0.0);
-    if (aovs.has(Aov::Variance)) {
+    const bool denoise = aovs.has(Aov::Denoise);
+    if (aovs.has(Aov::Variance) || denoise) {
         m_aov.square.assign(n, Sum3{});
         m_aov.weight2.assign(n, 0.0);
     }
     if (aovs.has(Aov::Samples)) m_aov.count.assign(n, 0);
-    if (aovs.has(Aov::Error)) {
+    if (aovs.splits_halves()) {
         m_aov.odd.assign(n, Sum3{});
         m_aov.odd_weight.assign(n, 0.0);
+    }
+    if (denoise) {
+        m_aov.guide.assign(n, Guide{});
+        m_aov.guide_odd.assign(n, Guide{});
+        m_aov.guide_square.assign(n, Guide{});
     }
 }
 
@@ -56,6 +85,17 @@ void Film::add_sample(int x, int y, Spectrum L, float w, const AovRecord& aov) {
     if (aov.odd && !m_aov.odd.empty() && is_finite(L)) {
         add3(m_aov.odd, i, L, w);
         m_aov.odd_weight[i] += w;
+    }
+    // A sample the beauty drops leaves the guides too, so that their halves have the
+    // colour's weights.
+    if (!m_aov.guide.empty() && is_finite(L)) {
+        const std::array<float, kGuideChannels> g = guide_channels(aov.guide);
+        for (int c = 0; c < kGuideChannels; ++c) {
+            const double wg = double(g[c]) * w;
+            m_aov.guide[i][c] += wg;
+            m_aov.guide_square[i][c] += wg * g[c];
+            if (aov.odd) m_aov.guide_odd[i][c] += wg;
+        }
     }
     if (!m_aov.weight.empty()) {
         m_aov.weight[i] += w;
@@ -129,26 +169,47 @@ Image Film::resolve_aov(Aov aov) const {
             case Aov::Error:
                 out[0] = relative_error(int(i % m_width), int(i / m_width));
                 break;
-            case Aov::Variance: {
-                // Weighted variance over the effective sample count, less one: for equal
-                // weights exactly the unbiased s^2 / n (a ratio estimator's variance).
-                const Pixel& px = m_pixels[i];
-                const double sw = px.weight, sw2 = m_aov.weight2[i];
-                const double n_eff = sw2 > 0 ? sw * sw / sw2 : 0;
-                for (int c = 0; c < 3; ++c) {
-                    if (!(n_eff > 1.0 + 1e-9)) {
-                        out[c] = 0;
-                        continue;
-                    }
-                    const double mean = px.sum[c] / sw;
-                    const double var = std::max(0.0, m_aov.square[i][c] / sw - mean * mean);
-                    out[c] = float(var / (n_eff - 1));
-                }
+            case Aov::Variance:
+                for (int c = 0; c < 3; ++c)
+                    out[c] = float(variance_of_mean(m_pixels[i].sum[c], m_aov.square[i][c],
+                                                    m_pixels[i].weight, m_aov.weight2[i]));
                 break;
-            }
+            case Aov::Denoise:
+                break;  // not an image of its own: denoise_input()
         }
     }
     return img;
+}
+
+DenoiseInput Film::denoise_input() const {
+    CHECK(m_aovs.has(Aov::Denoise), "the film was made without denoising buffers");
+    DenoiseInput in;
+    in.color_a = in.color_b = in.color_variance = Image(m_width, m_height, 3);
+    in.guide_a = in.guide_b = in.guide_variance = Image(m_width, m_height, kGuideChannels);
+    for (size_t i = 0; i < m_pixels.size(); ++i) {
+        const Pixel& px = m_pixels[i];
+        const double nb = m_aov.odd_weight[i], na = px.weight - nb;
+        // As in estimated_variance: a sliver of rounding in an empty half is no weight.
+        const bool has_a = na > 1e-9 * px.weight, has_b = nb > 1e-9 * px.weight;
+        auto halves = [&](double sum, double odd, float* a, float* b) {
+            *a = has_a ? float((sum - odd) / na) : 0.0f;
+            *b = has_b ? float(odd / nb) : 0.0f;
+        };
+        for (int c = 0; c < 3; ++c) {
+            const size_t k = i * 3 + size_t(c);
+            halves(px.sum[c], m_aov.odd[i][c], &in.color_a.pixels[k], &in.color_b.pixels[k]);
+            in.color_variance.pixels[k] =
+                float(variance_of_mean(px.sum[c], m_aov.square[i][c], px.weight, m_aov.weight2[i]));
+        }
+        for (int c = 0; c < kGuideChannels; ++c) {
+            const size_t k = i * kGuideChannels + size_t(c);
+            halves(m_aov.guide[i][c], m_aov.guide_odd[i][c], &in.guide_a.pixels[k],
+                   &in.guide_b.pixels[k]);
+            in.guide_variance.pixels[k] = float(variance_of_mean(
+                m_aov.guide[i][c], m_aov.guide_square[i][c], px.weight, m_aov.weight2[i]));
+        }
+    }
+    return in;
 }
 
 Image Film::resolve() const {
@@ -169,12 +230,21 @@ std::vector<Film::Buffer> Film::buffers() {
         return Buffer{name, v.data(), v.size() * sizeof(v[0])};
     };
     // Empty AOV buffers are listed too (0 bytes): the list is the same for every film.
-    return {raw("pixels", m_pixels),         raw("albedo", m_aov.albedo),
-            raw("normal", m_aov.normal),     raw("position", m_aov.position),
-            raw("square", m_aov.square),     raw("weight", m_aov.weight),
-            raw("hit_weight", m_aov.hit_weight), raw("depth", m_aov.depth),
-            raw("weight2", m_aov.weight2),   raw("count", m_aov.count),
-            raw("odd", m_aov.odd),           raw("odd_weight", m_aov.odd_weight)};
+    return {raw("pixels", m_pixels),
+            raw("albedo", m_aov.albedo),
+            raw("normal", m_aov.normal),
+            raw("position", m_aov.position),
+            raw("square", m_aov.square),
+            raw("weight", m_aov.weight),
+            raw("hit_weight", m_aov.hit_weight),
+            raw("depth", m_aov.depth),
+            raw("weight2", m_aov.weight2),
+            raw("count", m_aov.count),
+            raw("odd", m_aov.odd),
+            raw("odd_weight", m_aov.odd_weight),
+            raw("guide", m_aov.guide),
+            raw("guide_odd", m_aov.guide_odd),
+            raw("guide_square", m_aov.guide_square)};
 }
 
 uint64_t Film::nonfinite_samples() const {

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/denoise/denoise_input.h"
 #include "core/film/aov.h"
 #include "core/image.h"
 #include "core/math/vec.h"
@@ -43,6 +44,11 @@ public:
     // Variance is that of the pixel's mean: the weighted sample variance over the
     // effective sample count (sum w)^2 / sum w^2, less one; 0 below two samples.
     Image resolve_aov(Aov aov) const;
+    // What the denoiser reads, for a film with Aov::Denoise: the means of the even and of
+    // the odd sample indices (the two sample streams) of the colour and of the guide
+    // features, and the variance of each full mean by resolve_aov(Aov::Variance)'s
+    // formula. A half without samples has mean 0.
+    DenoiseInput denoise_input() const;
     uint64_t nonfinite_samples() const;
 
     // Every accumulator as raw bytes, by name, for checkpoints (io/checkpoint.h): a
@@ -61,6 +67,7 @@ public:
 
 private:
     using Sum3 = std::array<double, 3>;
+    using Guide = std::array<double, kGuideChannels>;
     // Structure of arrays: an AOV not asked for costs nothing but an empty vector.
     struct AovSums {
         std::vector<Sum3> albedo, normal, position, square;      // square: w L^2
@@ -70,6 +77,9 @@ private:
         // first half is the pixel's total less these.
         std::vector<Sum3> odd;
         std::vector<double> odd_weight;
+        // Denoising: the guide features' sums (w g), those of the odd-indexed samples and
+        // the squares (w g^2), in denoise_input.h's channel order.
+        std::vector<Guide> guide, guide_odd, guide_square;
     };
     struct Pixel {
         double sum[3] = {0, 0, 0};

@@ -1,6 +1,7 @@
 // The render loop with AOVs: the beauty is bit for bit the one rendered without them
 // (AOVs draw no numbers from the sampler), and every AOV is bitwise identical for any
-// thread count and any split into passes.
+// thread count and any split into passes. Denoising splits the samples as the error
+// AOV does, and its buffers are bitwise identical in the same way.
 #include <gtest/gtest.h>
 
 #include "core/accel/embree_accel.h"
@@ -14,6 +15,7 @@ namespace {
 struct Result {
     Image beauty;
     std::vector<Image> aovs;
+    DenoiseInput denoise;  // with Aov::Denoise
 };
 
 Result render_sphere(AovSet aovs, int threads, bool in_two_passes = false) {
@@ -40,6 +42,7 @@ Result render_sphere(AovSet aovs, int threads, bool in_two_passes = false) {
     Result r{film.resolve(), {}};
     for (Aov a : {Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Position, Aov::Variance, Aov::Samples})
         r.aovs.push_back(film.resolve_aov(a));
+    if (aovs.has(Aov::Denoise)) r.denoise = film.denoise_input();
     return r;
 }
 
@@ -59,6 +62,37 @@ TEST(RenderAov, AovsAreBitwiseIdenticalForAnyThreadCountAndPasses) {
     for (size_t i = 0; i < a.aovs.size(); ++i) {
         EXPECT_EQ(a.aovs[i].pixels, b.aovs[i].pixels) << i;
         EXPECT_EQ(a.aovs[i].pixels, c.aovs[i].pixels) << i;
+    }
+}
+
+std::vector<const Image*> images(const DenoiseInput& in) {
+    return {&in.color_a, &in.color_b, &in.color_variance,
+            &in.guide_a, &in.guide_b, &in.guide_variance};
+}
+
+TEST(RenderAov, DenoisingSplitsTheSamplesAsTheErrorAovDoes) {
+    const AovSet error = {Aov::Error}, denoise = {Aov::Denoise};
+    const Result e = render_sphere(error, 2), d = render_sphere(denoise, 2);
+    EXPECT_EQ(e.beauty.pixels, d.beauty.pixels);
+    EXPECT_NE(render_sphere({}, 2).beauty.pixels, d.beauty.pixels);
+    // The guides are there: the sphere's albedo and the camera-facing normal at its centre.
+    for (const Image* g : {&d.denoise.guide_a, &d.denoise.guide_b}) {
+        EXPECT_NEAR(g->at(12, 9)[kGuideAlbedo], 0.6f, 1e-6f);
+        EXPECT_GT(g->at(12, 9)[kGuideNormal + 2], 0.9f);
+        EXPECT_NEAR(g->at(12, 9)[kGuideDepth], 3.0f, 0.1f);
+    }
+}
+
+TEST(RenderAov, DenoiseInputIsBitwiseIdenticalForAnyThreadCountAndPasses) {
+    const AovSet aovs = {Aov::Denoise, Aov::Albedo};
+    const Result a = render_sphere(aovs, 1), b = render_sphere(aovs, 2),
+                 c = render_sphere(aovs, 2, true);
+    EXPECT_EQ(a.beauty.pixels, b.beauty.pixels);
+    EXPECT_EQ(a.beauty.pixels, c.beauty.pixels);
+    const auto ia = images(a.denoise), ib = images(b.denoise), ic = images(c.denoise);
+    for (size_t i = 0; i < ia.size(); ++i) {
+        EXPECT_EQ(ia[i]->pixels, ib[i]->pixels) << i;
+        EXPECT_EQ(ia[i]->pixels, ic[i]->pixels) << i;
     }
 }
 

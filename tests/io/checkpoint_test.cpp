@@ -1,6 +1,6 @@
-// Checkpoints: a film with every AOV survives the round trip bit for bit; a checkpoint of
-// other options (fingerprint), of another film layout, or damaged is refused and leaves
-// the film untouched.
+// Checkpoints: a film with every AOV, or with the denoising buffers, survives the round
+// trip bit for bit; a checkpoint of other options (fingerprint), of another film layout,
+// or damaged is refused and leaves the film untouched.
 #include "io/checkpoint.h"
 
 #include <gtest/gtest.h>
@@ -35,6 +35,8 @@ Film random_film(AovSet aovs, uint32_t seed) {
         aov.normal = {u(rng) - 1, u(rng) - 1, u(rng) - 1};
         aov.position = {u(rng), u(rng), u(rng)};
         aov.depth = u(rng) * 10;
+        aov.odd = i % 2 == 1;
+        aov.guide = {aov.albedo, aov.normal, aov.depth};
         film.add_sample(x, y, L, u(rng), aov);
     }
     return film;
@@ -74,6 +76,27 @@ TEST(Checkpoint, RoundTripKeepsEveryBufferBitForBit) {
         EXPECT_STREQ(a[i].name, b[i].name);
         EXPECT_EQ(a[i].bytes, b[i].bytes);
     }
+}
+
+TEST(Checkpoint, DenoisingBuffersSurviveTheRoundTrip) {
+    const test::ScratchDir dir;
+    const AovSet aovs = {Aov::Denoise};
+    const Film film = random_film(aovs, 4);
+    const std::string path = dir.file("d.exr.ckpt");
+    write_checkpoint(path, film, {"fp", 2, 0, 0});
+    Film back(13, 7, aovs);
+    std::string why;
+    ASSERT_TRUE(read_checkpoint(path, "fp", back, &why)) << why;
+    const DenoiseInput a = film.denoise_input(), b = back.denoise_input();
+    EXPECT_TRUE(same_bits(a.color_a, b.color_a));
+    EXPECT_TRUE(same_bits(a.color_b, b.color_b));
+    EXPECT_TRUE(same_bits(a.color_variance, b.color_variance));
+    EXPECT_TRUE(same_bits(a.guide_a, b.guide_a));
+    EXPECT_TRUE(same_bits(a.guide_b, b.guide_b));
+    EXPECT_TRUE(same_bits(a.guide_variance, b.guide_variance));
+    // A film without them does not take the checkpoint.
+    Film plain(13, 7, kAll);
+    EXPECT_FALSE(read_checkpoint(path, "fp", plain, &why));
 }
 
 TEST(Checkpoint, OtherFingerprintIsRefusedAndTheFilmUntouched) {
