@@ -1,0 +1,40 @@
+// A feature-guided denoiser after NFOR (Bitterli et al. 2016, "Nonlinearly Weighted
+// First-order Regression for Denoising Monte Carlo Renderings"): per pixel, a weighted
+// least-squares fit of the colour as a linear function of the guide features over a
+// window, with non-local-means weights from the colour; each half of the samples is
+// filtered apart at two bandwidths, the other half cross-validates the choice per
+// pixel, and the same comparison gives the error estimate.
+#pragma once
+
+#include <string>
+
+#include "core/denoise/denoise_input.h"
+#include "core/image.h"
+
+namespace penumbra {
+
+struct NforParams {
+    int window_radius = 9;  // regression window: (2r + 1)^2 pixels
+    int patch_radius = 3;   // non-local means patch for the regression's weights
+    float k_small = 0.5f;   // the two bandwidths the halves choose between
+    float k_large = 1.0f;
+    int feature_window_radius = 5;  // guide prefiltering
+    int center_stride = 2;          // fits centred on every 2nd pixel of every 2nd row
+};
+
+struct DenoiseResult {
+    Image color;  // 3 channels, working space
+    // Estimated relMSE of `color` (kRelMseEpsilon), from the halves' cross-validation.
+    double relmse_estimate = 0;
+    // Pixel values (per half) that the firefly guard held back, of all.
+    size_t fireflies = 0;
+};
+
+// Deterministic: the same bits for any thread count.
+DenoiseResult denoise_nfor(const DenoiseInput& input, const NforParams& params = {});
+
+// "NFOR (window 19x19, patch 7x7, k 0.5/1, ...)": the method and its parameters, for the
+// EXR header and the summary.
+std::string describe(const NforParams& params);
+
+}  // namespace penumbra
