@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/denoise/nl_means.h"
+#include "core/error.h"
 
 namespace penumbra {
 
@@ -73,24 +74,29 @@ struct Tile {
     size_t pixels() const { return size_t(width()) * height(); }
 };
 
-// One tile's fits: the weights of every offset, the normal equations, their solutions,
-// and the predictions they make over the tile grown by R, summed (colour, weight).
+// One tile's fits, per bandwidth: the predictions they make over the tile grown by R,
+// summed (colour and weight planes).
 struct TileFit {
-    std::vector<float> predictions;  // 4 planes of (w + 2R) x (h + 2R)
+    std::vector<std::vector<float>> predictions;  // per bandwidth, 4 planes of (w + 2R) x (h + 2R)
 };
 
 TileFit fit_tile(const Planes& color, const Planes& variance, const Planes& features,
-                 const RegressionParams& p, const Tile& t) {
+                 const RegressionParams& p, const std::vector<float>& ks, const Tile& t) {
     const int w = color.width, h = color.height, R = p.window_radius, S = p.center_stride;
-    const int Fc = features.channels, D = 1 + Fc, M = D * (D + 1) / 2;
+    const int Fc = features.channels, D = 1 + Fc, M = D * (D + 1) / 2, K = int(ks.size());
     const int side = 2 * R + 1;
     // The fits' centres: every S-th pixel of every S-th row (tile corners are multiples of S).
     const int cw = (t.width() + S - 1) / S, ch = (t.height() + S - 1) / S;
-    const size_t n = size_t(cw) * ch;
-    const NlmGuide guide{&color, &variance, p.patch_radius, p.k};
+    const size_t n = size_t(cw) * ch, offsets = size_t(side) * side;
+    const NlmGuide guide{&color, &variance, p.patch_radius, 0};
     NlmScratch scratch;
-    std::vector<float> weights(size_t(side) * side * n);
-    std::vector<float> ata(size_t(M) * n, 0.0f), atb(size_t(D) * 3 * n, 0.0f);
+    // Per bandwidth: the weights of every offset, and the normal equations.
+    std::vector<std::vector<float>> weights(K), ata(K), atb(K);
+    for (int b = 0; b < K; ++b) {
+        weights[b].resize(offsets * n);
+        ata[b].assign(size_t(M) * n, 0.0f);
+        atb[b].assign(size_t(D) * 3 * n, 0.0f);
+    }
     std::vector<float> X(size_t(D) * cw), WX(size_t(D) * cw), Y(size_t(3) * cw);
     std::vector<float> centre(size_t(Fc) * n);  // the features at the centres
     for (int k = 0; k < Fc; ++k)
@@ -101,13 +107,15 @@ TileFit fit_tile(const Planes& color, const Planes& variance, const Planes& feat
     std::vector<size_t> column(cw);
     for (int dy = -R, o = 0; dy <= R; ++dy)
         for (int dx = -R; dx <= R; ++dx, ++o) {
-            float* wt = &weights[size_t(o) * n];
-            patch_weights(guide, t.x0, t.y0, t.x1, t.y1, dx, dy, wt, scratch, S);
+            float* wts[4];
+            for (int b = 0; b < K; ++b) wts[b] = &weights[b][size_t(o) * n];
+            patch_weights(guide, ks.data(), K, t.x0, t.y0, t.x1, t.y1, dx, dy, wts, scratch, S);
             for (int i = 0; i < cw; ++i)
                 column[i] = size_t(std::clamp(t.x0 + i * S + dx, 0, w - 1));
             for (int j = 0; j < ch; ++j) {
                 const size_t row = size_t(j) * cw;
                 const size_t qrow = size_t(std::clamp(t.y0 + j * S + dy, 0, h - 1)) * w;
+                // The samples' variables (1, then the features less the centre's) and colour.
                 for (int i = 0; i < cw; ++i) X[i] = 1.0f;
                 for (int k = 0; k < Fc; ++k) {
                     const float* f = features.plane(k) + qrow;
@@ -119,63 +127,68 @@ TileFit fit_tile(const Planes& color, const Planes& variance, const Planes& feat
                     const float* col = color.plane(c) + qrow;
                     for (int i = 0; i < cw; ++i) Y[size_t(c) * cw + i] = col[column[i]];
                 }
-                for (int k = 0; k < D; ++k)
-                    for (int i = 0; i < cw; ++i)
-                        WX[size_t(k) * cw + i] = wt[row + i] * X[size_t(k) * cw + i];
-                for (int k = 0, m = 0; k < D; ++k)
-                    for (int l = k; l < D; ++l, ++m) {
-                        float* a = &ata[size_t(m) * n + row];
-                        const float *wk = &WX[size_t(k) * cw], *xl = &X[size_t(l) * cw];
-                        for (int i = 0; i < cw; ++i) a[i] += wk[i] * xl[i];
-                    }
-                for (int k = 0; k < D; ++k)
-                    for (int c = 0; c < 3; ++c) {
-                        float* a = &atb[size_t(k * 3 + c) * n + row];
-                        const float *wk = &WX[size_t(k) * cw], *yc = &Y[size_t(c) * cw];
-                        for (int i = 0; i < cw; ++i) a[i] += wk[i] * yc[i];
-                    }
-            }
-        }
-    // Solve each centre's fit; beta holds the constant term per channel, then the
-    // features' coefficients.
-    std::vector<float> beta(size_t(D) * 3 * n);
-    for (size_t i = 0; i < n; ++i) {
-        double a[kMaxVariables * (kMaxVariables + 1) / 2], b[kMaxVariables * 3],
-            sol[kMaxVariables * 3];
-        for (int m = 0; m < M; ++m) a[m] = ata[size_t(m) * n + i];
-        for (int m = 0; m < D * 3; ++m) b[m] = atb[size_t(m) * n + i];
-        solve(D, a, b, sol);
-        for (int m = 0; m < D * 3; ++m) beta[size_t(m) * n + i] = float(sol[m]);
-    }
-    // Every fit predicts its window, weighted as in the fit: the constant term plus the
-    // coefficients times the features' difference from the centre.
-    const int pw = t.width() + 2 * R, ph = t.height() + 2 * R;
-    const size_t pn = size_t(pw) * ph;
-    TileFit fit;
-    fit.predictions.assign(4 * pn, 0.0f);
-    for (int dy = -R, o = 0; dy <= R; ++dy)
-        for (int dx = -R; dx <= R; ++dx, ++o) {
-            const float* wt = &weights[size_t(o) * n];
-            for (int j = 0; j < ch; ++j) {
-                const int yq = t.y0 + j * S + dy;
-                if (yq < 0 || yq >= h) continue;
-                for (int i = 0; i < cw; ++i) {
-                    const int xq = t.x0 + i * S + dx;
-                    const size_t ci = size_t(j) * cw + i;
-                    const float wgt = wt[ci];
-                    if (xq < 0 || xq >= w || wgt == 0) continue;
-                    const size_t pi = size_t(yq - t.y0 + R) * pw + (xq - t.x0 + R);
-                    float r[3] = {beta[0 * n + ci], beta[1 * n + ci], beta[2 * n + ci]};
-                    for (int k = 0; k < Fc; ++k) {
-                        const float df = features.at(k, xq, yq) - centre[size_t(k) * n + ci];
-                        for (int c = 0; c < 3; ++c)
-                            r[c] += beta[size_t((k + 1) * 3 + c) * n + ci] * df;
-                    }
-                    for (int c = 0; c < 3; ++c) fit.predictions[c * pn + pi] += wgt * r[c];
-                    fit.predictions[3 * pn + pi] += wgt;
+                for (int b = 0; b < K; ++b) {
+                    const float* wt = wts[b] + row;
+                    for (int k = 0; k < D; ++k)
+                        for (int i = 0; i < cw; ++i)
+                            WX[size_t(k) * cw + i] = wt[i] * X[size_t(k) * cw + i];
+                    for (int k = 0, m = 0; k < D; ++k)
+                        for (int l = k; l < D; ++l, ++m) {
+                            float* a = &ata[b][size_t(m) * n + row];
+                            const float *wk = &WX[size_t(k) * cw], *xl = &X[size_t(l) * cw];
+                            for (int i = 0; i < cw; ++i) a[i] += wk[i] * xl[i];
+                        }
+                    for (int k = 0; k < D; ++k)
+                        for (int c = 0; c < 3; ++c) {
+                            float* a = &atb[b][size_t(k * 3 + c) * n + row];
+                            const float *wk = &WX[size_t(k) * cw], *yc = &Y[size_t(c) * cw];
+                            for (int i = 0; i < cw; ++i) a[i] += wk[i] * yc[i];
+                        }
                 }
             }
         }
+    TileFit fit;
+    const int pw = t.width() + 2 * R, ph = t.height() + 2 * R;
+    const size_t pn = size_t(pw) * ph;
+    std::vector<float> beta(size_t(D) * 3 * n);
+    for (int b = 0; b < K; ++b) {
+        // Solve each centre's fit; beta holds the constant term per channel, then the
+        // features' coefficients.
+        for (size_t i = 0; i < n; ++i) {
+            double a[kMaxVariables * (kMaxVariables + 1) / 2], rhs[kMaxVariables * 3],
+                sol[kMaxVariables * 3];
+            for (int m = 0; m < M; ++m) a[m] = ata[b][size_t(m) * n + i];
+            for (int m = 0; m < D * 3; ++m) rhs[m] = atb[b][size_t(m) * n + i];
+            solve(D, a, rhs, sol);
+            for (int m = 0; m < D * 3; ++m) beta[size_t(m) * n + i] = float(sol[m]);
+        }
+        // Every fit predicts its window, weighted as in the fit: the constant term plus
+        // the coefficients times the features' difference from the centre.
+        std::vector<float>& pred = fit.predictions.emplace_back(4 * pn, 0.0f);
+        for (int dy = -R, o = 0; dy <= R; ++dy)
+            for (int dx = -R; dx <= R; ++dx, ++o) {
+                const float* wt = &weights[b][size_t(o) * n];
+                for (int j = 0; j < ch; ++j) {
+                    const int yq = t.y0 + j * S + dy;
+                    if (yq < 0 || yq >= h) continue;
+                    for (int i = 0; i < cw; ++i) {
+                        const int xq = t.x0 + i * S + dx;
+                        const size_t ci = size_t(j) * cw + i;
+                        const float wgt = wt[ci];
+                        if (xq < 0 || xq >= w || wgt == 0) continue;
+                        const size_t pi = size_t(yq - t.y0 + R) * pw + (xq - t.x0 + R);
+                        float r[3] = {beta[0 * n + ci], beta[1 * n + ci], beta[2 * n + ci]};
+                        for (int k = 0; k < Fc; ++k) {
+                            const float df = features.at(k, xq, yq) - centre[size_t(k) * n + ci];
+                            for (int c = 0; c < 3; ++c)
+                                r[c] += beta[size_t((k + 1) * 3 + c) * n + ci] * df;
+                        }
+                        for (int c = 0; c < 3; ++c) pred[c * pn + pi] += wgt * r[c];
+                        pred[3 * pn + pi] += wgt;
+                    }
+                }
+            }
+    }
     return fit;
 }
 
@@ -200,9 +213,12 @@ Planes unit_scaled(const Planes& features) {
 
 }  // namespace
 
-Planes collaborative_regression(const Planes& color, const Planes& variance, const Planes& features,
-                                const RegressionParams& p) {
+std::vector<Planes> collaborative_regression(const Planes& color, const Planes& variance,
+                                             const Planes& features, const RegressionParams& p,
+                                             const std::vector<float>& ks) {
     const int w = color.width, h = color.height, R = p.window_radius, S = p.center_stride;
+    const int K = int(ks.size());
+    CHECK(K >= 1 && K <= 4, "one to four bandwidths");
     const Planes scaled = unit_scaled(features);
     const int T = std::max(kDenoiseTile, R);  // a pixel lies in the grown tiles of 3 x 3
     const int tiles_x = (w + T - 1) / T, tiles_y = (h + T - 1) / T;
@@ -211,34 +227,36 @@ Planes collaborative_regression(const Planes& color, const Planes& variance, con
     };
     std::vector<TileFit> fits(size_t(tiles_x) * tiles_y);
     tbb::parallel_for(0, tiles_x * tiles_y, [&](int i) {
-        fits[i] = fit_tile(color, variance, scaled, p, tile_at(i % tiles_x, i / tiles_x));
+        fits[i] = fit_tile(color, variance, scaled, p, ks, tile_at(i % tiles_x, i / tiles_x));
     });
     // Each pixel sums the predictions of the tiles around it, in tile order.
-    Planes out(w, h, 3);
+    std::vector<Planes> out(K, Planes(w, h, 3));
     tbb::parallel_for(0, tiles_x * tiles_y, [&](int i) {
         const Tile t = tile_at(i % tiles_x, i / tiles_x);
-        for (int y = t.y0; y < t.y1; ++y)
-            for (int x = t.x0; x < t.x1; ++x) {
-                float sum[4] = {0, 0, 0, 0};
-                for (int ty = std::max(0, y / T - 1); ty <= std::min(tiles_y - 1, y / T + 1); ++ty)
-                    for (int tx = std::max(0, x / T - 1); tx <= std::min(tiles_x - 1, x / T + 1);
-                         ++tx) {
-                        const Tile s = tile_at(tx, ty);
-                        const int pw = s.width() + 2 * R, ph = s.height() + 2 * R;
-                        const int px = x - s.x0 + R, py = y - s.y0 + R;
-                        if (px < 0 || py < 0 || px >= pw || py >= ph) continue;
-                        const size_t pn = size_t(pw) * ph, pi = size_t(py) * pw + px;
-                        for (int c = 0; c < 4; ++c)
-                            sum[c] += fits[ty * tiles_x + tx].predictions[c * pn + pi];
-                    }
-                // The pixel's own value counts as its own fit's centre would, with weight
-                // 1: where the colour is nearly noise-free the weights of every other
-                // pixel vanish, and a pixel between the fits' centres would otherwise be
-                // left to the vanishing tails of fits that do not see it.
-                const float self = S > 1 ? 1.0f : 0.0f;
-                for (int c = 0; c < 3; ++c)
-                    out.at(c, x, y) = (sum[c] + self * color.at(c, x, y)) / (sum[3] + self);
-            }
+        for (int b = 0; b < K; ++b)
+            for (int y = t.y0; y < t.y1; ++y)
+                for (int x = t.x0; x < t.x1; ++x) {
+                    float sum[4] = {0, 0, 0, 0};
+                    for (int ty = std::max(0, y / T - 1); ty <= std::min(tiles_y - 1, y / T + 1);
+                         ++ty)
+                        for (int tx = std::max(0, x / T - 1);
+                             tx <= std::min(tiles_x - 1, x / T + 1); ++tx) {
+                            const Tile s = tile_at(tx, ty);
+                            const int pw = s.width() + 2 * R, ph = s.height() + 2 * R;
+                            const int px = x - s.x0 + R, py = y - s.y0 + R;
+                            if (px < 0 || py < 0 || px >= pw || py >= ph) continue;
+                            const size_t pn = size_t(pw) * ph, pi = size_t(py) * pw + px;
+                            const std::vector<float>& pred = fits[ty * tiles_x + tx].predictions[b];
+                            for (int c = 0; c < 4; ++c) sum[c] += pred[c * pn + pi];
+                        }
+                    // The pixel's own value counts as its own fit's centre would, with
+                    // weight 1: where the colour is nearly noise-free the weights of every
+                    // other pixel vanish, and a pixel between the fits' centres would
+                    // otherwise be left to the vanishing tails of fits that do not see it.
+                    const float self = S > 1 ? 1.0f : 0.0f;
+                    for (int c = 0; c < 3; ++c)
+                        out[b].at(c, x, y) = (sum[c] + self * color.at(c, x, y)) / (sum[3] + self);
+                }
     });
     return out;
 }

@@ -88,13 +88,15 @@ Halves first_pass(const Planes& a, const Planes& b, const Planes& var, const Pla
     // The two bandwidths' errors summed over the channels, as one image of two channels,
     // smoothed together (one set of weights).
     Planes errors(a.width, a.height, 2);
-    const float ks[2] = {p.k_small, p.k_large};
+    const RegressionParams rp{p.window_radius, p.patch_radius, p.center_stride};
+    // Cross: each half's colour fitted to the other half's guides, so that the guides'
+    // noise is independent of the colour's.
+    const std::vector<Planes> fa =
+        collaborative_regression(a, var_half, guides_b, rp, {p.k_small, p.k_large});
+    const std::vector<Planes> fb =
+        collaborative_regression(b, var_half, guides_a, rp, {p.k_small, p.k_large});
     for (int i = 0; i < 2; ++i) {
-        const RegressionParams rp{p.window_radius, p.patch_radius, ks[i], p.center_stride};
-        // Cross: each half's colour fitted to the other half's guides, so that the
-        // guides' noise is independent of the colour's.
-        fit[i].a = collaborative_regression(a, var_half, guides_b, rp);
-        fit[i].b = collaborative_regression(b, var_half, guides_a, rp);
+        fit[i] = {fa[i], fb[i]};
         const Planes mse = cross_validated_mse(a, b, fit[i].a, fit[i].b);
         for (int c = 0; c < 3; ++c)
             for (size_t j = 0; j < errors.pixels(); ++j) errors.plane(i)[j] += mse.plane(c)[j];

@@ -13,14 +13,16 @@ constexpr float kEpsilon = 1e-10f;
 
 }  // namespace
 
-void patch_weights(const NlmGuide& g, int x0, int y0, int x1, int y1, int dx, int dy, float* out,
-                   NlmScratch& s, int stride) {
+void patch_weights(const NlmGuide& g, const float* ks, int nk, int x0, int y0, int x1, int y1,
+                   int dx, int dy, float* const* out, NlmScratch& s, int stride) {
     const Planes& img = *g.guide;
     const Planes& var = *g.variance;
     const int w = img.width, h = img.height, F = g.patch_radius;
     const int ex0 = x0 - F, ey0 = y0 - F, ew = (x1 - x0) + 2 * F, eh = (y1 - y0) + 2 * F;
-    const float k2 = g.k * g.k;
-    s.distance.assign(size_t(ew) * eh, 0.0f);
+    const size_t area = size_t(ew) * eh;
+    s.distance.assign(area * nk, 0.0f);
+    s.numerator.resize(ew);
+    s.denominator.resize(ew);
     // Whether the patches' extent and its offset copy lie inside the image: then the
     // rows are contiguous and the loop below vectorises; at the border they are clamped.
     const bool inside_x = ex0 >= 0 && ex0 + ew <= w && ex0 + dx >= 0 && ex0 + dx + ew <= w;
@@ -30,27 +32,36 @@ void patch_weights(const NlmGuide& g, int x0, int y0, int x1, int y1, int dx, in
         s.column_a[ex] = std::clamp(ex0 + ex, 0, w - 1);
         s.column_b[ex] = std::clamp(ex0 + ex + dx, 0, w - 1);
     }
-    // Per-pixel distance over the patches' extent, summed over channels.
+    // Per-pixel distance over the patches' extent, summed over channels: the squared
+    // difference less the variance it carries, over the variance times k^2.
+    float* num = s.numerator.data();
+    float* den = s.denominator.data();
     for (int c = 0; c < img.channels; ++c) {
         for (int ey = 0; ey < eh; ++ey) {
             const size_t ra = size_t(std::clamp(ey0 + ey, 0, h - 1)) * w;
             const size_t rb = size_t(std::clamp(ey0 + ey + dy, 0, h - 1)) * w;
             const float *ua = img.plane(c) + ra, *ub = img.plane(c) + rb;
             const float *va = var.plane(c) + ra, *vb = var.plane(c) + rb;
-            float* d = &s.distance[size_t(ey) * ew];
-            auto term = [k2](float pa, float pb, float sa, float sb) {
-                const float diff = pa - pb;
-                return (diff * diff - (sa + std::min(sa, sb))) / (kEpsilon + k2 * (sa + sb));
-            };
             if (inside_x) {
-                const int a0 = ex0, b0 = ex0 + dx;
-                for (int ex = 0; ex < ew; ++ex)
-                    d[ex] += term(ua[a0 + ex], ub[b0 + ex], va[a0 + ex], vb[b0 + ex]);
+                const float *pa = ua + ex0, *pb = ub + ex0 + dx;
+                const float *sa = va + ex0, *sb = vb + ex0 + dx;
+                for (int ex = 0; ex < ew; ++ex) {
+                    const float diff = pa[ex] - pb[ex];
+                    num[ex] = diff * diff - (sa[ex] + std::min(sa[ex], sb[ex]));
+                    den[ex] = sa[ex] + sb[ex];
+                }
             } else {
                 for (int ex = 0; ex < ew; ++ex) {
                     const int xa = s.column_a[ex], xb = s.column_b[ex];
-                    d[ex] += term(ua[xa], ub[xb], va[xa], vb[xb]);
+                    const float diff = ua[xa] - ub[xb];
+                    num[ex] = diff * diff - (va[xa] + std::min(va[xa], vb[xb]));
+                    den[ex] = va[xa] + vb[xb];
                 }
+            }
+            for (int k = 0; k < nk; ++k) {
+                const float k2 = ks[k] * ks[k];
+                float* d = &s.distance[k * area + size_t(ey) * ew];
+                for (int ex = 0; ex < ew; ++ex) d[ex] += num[ex] / (kEpsilon + k2 * den[ex]);
             }
         }
     }
@@ -58,26 +69,28 @@ void patch_weights(const NlmGuide& g, int x0, int y0, int x1, int y1, int dx, in
     // vectorise), then along the rows.
     const int n = 2 * F + 1;
     const int ow = (x1 - x0 + stride - 1) / stride, oh = (y1 - y0 + stride - 1) / stride;
-    s.rows.assign(size_t(ew) * oh, 0.0f);
-    for (int y = 0; y < oh; ++y) {
-        float* r = &s.rows[size_t(y) * ew];
-        for (int i = 0; i < n; ++i) {
-            const float* d = &s.distance[size_t(y * stride + i) * ew];
-            for (int ex = 0; ex < ew; ++ex) r[ex] += d[ex];
-        }
-    }
     const float norm = 1.0f / float(n * n * img.channels);
-    for (int y = 0; y < oh; ++y) {
-        float* o = out + size_t(y) * ow;
-        const float* r = &s.rows[size_t(y) * ew];
-        std::fill(o, o + ow, 0.0f);
-        for (int i = 0; i < n; ++i)
-            for (int x = 0; x < ow; ++x) o[x] += r[x * stride + i];
-        for (int x = 0; x < ow; ++x) o[x] = exp_neg(std::max(0.0f, o[x] * norm));
-        const int yq = y0 + y * stride + dy;
-        for (int x = 0; x < ow; ++x) {
-            const int xq = x0 + x * stride + dx;
-            if (yq < 0 || yq >= h || xq < 0 || xq >= w) o[x] = 0.0f;
+    for (int k = 0; k < nk; ++k) {
+        s.rows.assign(size_t(ew) * oh, 0.0f);
+        for (int y = 0; y < oh; ++y) {
+            float* r = &s.rows[size_t(y) * ew];
+            for (int i = 0; i < n; ++i) {
+                const float* d = &s.distance[k * area + size_t(y * stride + i) * ew];
+                for (int ex = 0; ex < ew; ++ex) r[ex] += d[ex];
+            }
+        }
+        for (int y = 0; y < oh; ++y) {
+            float* o = out[k] + size_t(y) * ow;
+            const float* r = &s.rows[size_t(y) * ew];
+            std::fill(o, o + ow, 0.0f);
+            for (int i = 0; i < n; ++i)
+                for (int x = 0; x < ow; ++x) o[x] += r[x * stride + i];
+            for (int x = 0; x < ow; ++x) o[x] = exp_neg(std::max(0.0f, o[x] * norm));
+            const int yq = y0 + y * stride + dy;
+            for (int x = 0; x < ow; ++x) {
+                const int xq = x0 + x * stride + dx;
+                if (yq < 0 || yq >= h || xq < 0 || xq >= w) o[x] = 0.0f;
+            }
         }
     }
 }
@@ -95,7 +108,8 @@ Planes nl_means(const Planes& image, const NlmGuide& guide, int radius) {
         std::vector<int> column(tw);
         for (int dy = -radius; dy <= radius; ++dy)
             for (int dx = -radius; dx <= radius; ++dx) {
-                patch_weights(guide, x0, y0, x1, y1, dx, dy, weights.data(), scratch);
+                float* out_k[1] = {weights.data()};
+                patch_weights(guide, &guide.k, 1, x0, y0, x1, y1, dx, dy, out_k, scratch, 1);
                 // The weight is 0 where the offset pixel is outside; clamping only keeps
                 // the reads inside.
                 for (int x = 0; x < tw; ++x) column[x] = std::clamp(x0 + x + dx, 0, w - 1);

@@ -45,15 +45,16 @@ inline float exp_neg(float x) {
 
 // Scratch buffers for patch_weights, reused across offsets.
 struct NlmScratch {
-    std::vector<float> distance, rows;
+    std::vector<float> distance, rows, numerator, denominator;
     std::vector<int> column_a, column_b;
 };
 
 // w(p, p + (dx, dy)) = exp(-max(0, patch distance)) for p = (x0 + i s, y0 + j s) in
-// [x0, x1) x [y0, y1) (s: stride), row by row into `out`; 0 where p + (dx, dy) lies
-// outside the image. Patch pixels beyond the border are clamped to it.
-void patch_weights(const NlmGuide& g, int x0, int y0, int x1, int y1, int dx, int dy, float* out,
-                   NlmScratch& scratch, int stride = 1);
+// [x0, x1) x [y0, y1) (s: stride), row by row into out[b], for each of the nk bandwidths
+// ks[b] (the guide's own k unused), which share the differences; 0 where p + (dx, dy)
+// lies outside the image. Patch pixels beyond the border are clamped to it.
+void patch_weights(const NlmGuide& g, const float* ks, int nk, int x0, int y0, int x1, int y1,
+                   int dx, int dy, float* const* out, NlmScratch& scratch, int stride);
 
 // Each pixel of `image` replaced by the weighted mean of the pixels within `radius`
 // (a (2R + 1)^2 window), weighted by the guide's patch similarity. Deterministic.

@@ -68,9 +68,15 @@ TEST(Nfor, BeatsTheRawImageByAnOrderOfMagnitude) {
     }
 }
 
+// The estimate has noise of its own: the squared differences it averages carry a raw
+// half's variance, so its standard deviation is about the raw relMSE times sqrt(2 / M)
+// over M pixel channels. At a half's noise of 100% that is 30% of the denoised error on
+// a 128 x 128 image (estimate / truth over 8 noise seeds: 0.21-1.67) and 15% on 256 x 256
+// (0.76-1.39), which this test uses.
 TEST(Nfor, ErrorEstimateWithinAFactorOfTwo) {
     for (float sigma : {0.1f, 0.3f, 1.0f}) {
-        const Synthetic s = make_synthetic(128, 128, sigma, 7);
+        const int size = sigma < 1 ? 128 : 256;
+        const Synthetic s = make_synthetic(size, size, sigma, 7);
         const DenoiseResult r = denoise_nfor(s.input);
         const double truth = relative_mse(r.color, s.truth);
         EXPECT_GT(r.relmse_estimate, truth / 2) << "sigma " << sigma;
