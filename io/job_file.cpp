@@ -72,7 +72,8 @@ public:
                                             "frames_per_task",
                                             "light_sampler",
                                             "triangle_sampling",
-                                            "env_sampling"};
+                                            "env_sampling",
+                                            "denoise"};
         for (const auto& [key, value] : m_object.items()) {
             bool known = false;
             for (const char* k : kKeys) known = known || key == k;
@@ -132,10 +133,7 @@ public:
         text("look", s.look);
         text("aov", s.aov);
         text("compression", s.compression);
-        if (m_object.contains("half")) {
-            if (!m_object["half"].is_boolean()) fail("half", "expected true or false");
-            s.half = m_object["half"].get<bool>();
-        }
+        boolean("half", s.half);
         choice("light_units", s.light_units, {"photometric", "radiometric"});
         choice("default_light", s.default_light, {"auto", "on", "off"});
         choice("light_sampler", s.light_sampler, {"uniform", "power", "bvh", "auto"});
@@ -144,10 +142,8 @@ public:
         number("exposure", s.exposure, false);
         if (s.exposure && std::abs(*s.exposure) > 64)
             fail("exposure", "expected stops in [-64, 64]");
-        if (m_object.contains("strict")) {
-            if (!m_object["strict"].is_boolean()) fail("strict", "expected true or false");
-            s.strict = m_object["strict"].get<bool>();
-        }
+        boolean("strict", s.strict);
+        boolean("denoise", s.denoise);
         number("target_error", s.target_error, true);
         integer("adaptive_min_spp", s.adaptive_min_spp, 0, 1 << 24);
         number("clamp_direct", s.clamp_direct, true);
@@ -189,6 +185,11 @@ private:
     void path(const char* key, std::optional<std::string>& out) const {
         text(key, out);
         if (out && fs::path(*out).is_relative()) out = (m_base / *out).lexically_normal().string();
+    }
+    void boolean(const char* key, std::optional<bool>& out) const {
+        if (!m_object.contains(key)) return;
+        if (!m_object[key].is_boolean()) fail(key, "expected true or false");
+        out = m_object[key].get<bool>();
     }
     void integer(const char* key, std::optional<int>& out, int lo, int hi) const {
         if (!m_object.contains(key)) return;

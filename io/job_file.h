@@ -44,6 +44,8 @@ struct JobSettings {
     // --clamp-direct, --clamp-indirect and --regularize.
     std::optional<double> target_error, clamp_direct, clamp_indirect, regularize;
     std::optional<int> adaptive_min_spp;
+    // As --denoise.
+    std::optional<bool> denoise;
 };
 
 struct JobEntry {

@@ -3,6 +3,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 #include "core/camera/camera_matrices.h"
@@ -35,6 +36,51 @@ const std::vector<AovLayout>& aov_layouts() {
         {Aov::Error, "Error", {"X"}, false, false},
     };
     return list;
+}
+
+// The exposure scales colour, not alpha.
+void expose(Image& image, float scale) {
+    if (scale == 1) return;
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+        if (image.channels < 4 || i % size_t(image.channels) != 3) image.pixels[i] *= scale;
+}
+
+// Doubles as text with every digit a double holds, as the other penumbra: fields.
+std::string full_precision(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+// The film's beauty with its RGB replaced by the denoised colour; the film's own is kept
+// in `noisy`, the layout the same, so both take the same exposure and conversion.
+void use_denoised(Image& working, const Image& denoised, Image& noisy) {
+    CHECK(denoised.width == working.width && denoised.height == working.height &&
+              denoised.channels == 3,
+          "denoised image " << denoised.width << "x" << denoised.height << "x" << denoised.channels
+                            << " for a " << working.width << "x" << working.height << " film");
+    noisy = working;
+    for (size_t p = 0; p < size_t(working.width) * working.height; ++p)
+        for (int c = 0; c < 3; ++c)
+            working.pixels[p * size_t(working.channels) + size_t(c)] = denoised.pixels[p * 3 + c];
+}
+
+// RGB of an RGB(A) image.
+Image rgb_of(const Image& image) {
+    Image out(image.width, image.height, 3);
+    for (size_t p = 0; p < size_t(image.width) * image.height; ++p)
+        for (int c = 0; c < 3; ++c)
+            out.pixels[p * 3 + size_t(c)] = image.pixels[p * size_t(image.channels) + size_t(c)];
+    return out;
+}
+
+Image read_reference(const std::string& path, const Image& beauty) {
+    Image ref = read_beauty(path);
+    if (ref.width != beauty.width || ref.height != beauty.height)
+        throw SceneError(path + ": the reference is " + std::to_string(ref.width) + "x" +
+                         std::to_string(ref.height) + ", the render " +
+                         std::to_string(beauty.width) + "x" + std::to_string(beauty.height));
+    return ref;
 }
 
 }  // namespace
@@ -100,29 +146,36 @@ Image read_beauty(const std::string& path) {
 RenderFilesResult write_render(const RenderFiles& files, const Film& film,
                                const ColorPipeline& color, const CameraDesc& camera,
                                Metadata metadata) {
-    // The exposure scales colour, not alpha.
     const float scale = std::exp2(files.exposure);
     Image working = film.resolve();
-    if (scale != 1)
-        for (size_t i = 0; i < working.pixels.size(); ++i)
-            if (working.channels < 4 || i % size_t(working.channels) != 3)
-                working.pixels[i] *= scale;
+    Image noisy;  // the film's own beauty when denoised, as `beauty` is made
+    if (files.denoised) use_denoised(working, *files.denoised->color, noisy);
+    expose(working, scale);
     Image beauty = working;
     color.to_output(beauty);
+    if (files.denoised) {
+        expose(noisy, scale);
+        color.to_output(noisy);
+        metadata.push_back({"penumbra:denoise", files.denoised->method});
+        metadata.push_back(
+            {"penumbra:denoise_relmse_estimate", full_precision(files.denoised->relmse_estimate)});
+    }
 
     RenderFilesResult result;
     if (!files.reference.empty()) {
-        const Image ref = read_beauty(files.reference);
-        if (ref.width != beauty.width || ref.height != beauty.height)
-            throw SceneError(files.reference + ": the reference is " + std::to_string(ref.width) +
-                             "x" + std::to_string(ref.height) + ", the render " +
-                             std::to_string(beauty.width) + "x" + std::to_string(beauty.height));
+        const Image ref = read_reference(files.reference, beauty);
         result.mse = mean_squared_error(beauty, ref);
         result.relmse = relative_mse(beauty, ref);
         metadata.push_back({"penumbra:reference", files.reference});
         metadata.push_back({"penumbra:mse", *result.mse});
         metadata.push_back({"penumbra:relmse", *result.relmse});
         metadata.push_back({"penumbra:relmse_epsilon", kRelMseEpsilon});
+        if (files.denoised) {
+            result.noisy_mse = mean_squared_error(noisy, ref);
+            result.noisy_relmse = relative_mse(noisy, ref);
+            metadata.push_back({"penumbra:noisy_mse", *result.noisy_mse});
+            metadata.push_back({"penumbra:noisy_relmse", *result.noisy_relmse});
+        }
     }
     for (auto& entry : color_metadata(color)) metadata.push_back(std::move(entry));
     for (auto& entry : camera_metadata(camera, beauty.width, beauty.height))
@@ -130,6 +183,8 @@ RenderFilesResult write_render(const RenderFiles& files, const Film& film,
 
     const AovLayers aovs = aov_layers(film, color, scale);
     std::vector<ExrLayer> layers = {{"", {"R", "G", "B", "A"}, &beauty, false}};
+    const Image noisy_rgb = files.denoised ? rgb_of(noisy) : Image();
+    if (files.denoised) layers.push_back({"Noisy", {"R", "G", "B"}, &noisy_rgb, false});
     layers.insert(layers.end(), aovs.layers.begin(), aovs.layers.end());
     write_exr(files.exr, layers, metadata, files.exr_options);
     if (!files.preview.empty()) write_preview(files.preview, working, color);

@@ -14,23 +14,41 @@
 
 namespace penumbra {
 
+// A denoised beauty (core/denoise/nfor_denoiser.h's result) to write in place of the
+// film's own estimate.
+struct DenoisedBeauty {
+    const Image* color = nullptr;  // 3 channels, working space, the film's size
+    std::string method;            // the method and its parameters: describe(params)
+    double relmse_estimate = 0;    // the denoiser's estimate of color's relMSE
+};
+
 struct RenderFiles {
     std::string exr;      // the EXR's path
     std::string preview;  // the PNG/JPEG's path; empty: none
     float exposure = 0;   // stops: the beauty (EXR and preview) is scaled by 2^exposure
     ExrOptions exr_options;
     std::string reference;  // EXR to compare with (same size, output colour space); empty: none
+    // Set: the EXR's RGB and the preview show this image (alpha stays the film's), the
+    // film's unbiased estimate becomes the layer Noisy.R/G/B (exposed and converted as
+    // the RGB is), and the header gets "penumbra:denoise" (the method) and
+    // "penumbra:denoise_relmse_estimate".
+    const DenoisedBeauty* denoised = nullptr;
 };
 
 struct RenderFilesResult {
-    std::optional<double> mse, relmse;  // against RenderFiles::reference
+    // Against RenderFiles::reference: of the EXR's RGB (the denoised image when there is
+    // one) and, when denoised, of the Noisy layer.
+    std::optional<double> mse, relmse;
+    std::optional<double> noisy_mse, noisy_relmse;
 };
 
 // Writes the EXR and the preview of film (rendered in color's working space), its beauty
 // scaled by 2^exposure (and the variance AOV by its square), and returns the error of the
 // exposed beauty against the reference. metadata is the caller's (scene, integrator,
-// spp, ...); color_metadata, camera_metadata and the reference's error are added.
-// Throws SceneError for a reference that cannot be read or does not match in size.
+// spp, ...); color_metadata, camera_metadata, the denoiser's fields and the reference's
+// errors ("penumbra:mse", "penumbra:relmse", and when denoised "penumbra:noisy_mse" and
+// "penumbra:noisy_relmse") are added. Throws SceneError for a reference that cannot be
+// read or does not match in size.
 RenderFilesResult write_render(const RenderFiles& files, const Film& film,
                                const ColorPipeline& color, const CameraDesc& camera,
                                Metadata metadata);

@@ -79,6 +79,7 @@ void apply(const JobSettings& s, RenderCommandOptions& o) {
     if (s.clamp_direct) o.clamp_direct = float(*s.clamp_direct);
     if (s.clamp_indirect) o.clamp_indirect = float(*s.clamp_indirect);
     if (s.regularize) o.regularize = float(*s.regularize);
+    if (s.denoise) o.denoise = *s.denoise;
 }
 
 // Option values the command line checks with CLI11 but a job file can spell freely.
@@ -192,6 +193,15 @@ std::string band_output_path(const std::string& output, int band, int bands) {
     return (p.parent_path() / (p.stem().string() + suffix)).string();
 }
 
+namespace {
+
+// s right-aligned in a column `width` wide, as printf's %10s.
+std::string pad(const std::string& s, size_t width) {
+    return s.size() >= width ? s : std::string(width - s.size(), ' ') + s;
+}
+
+}  // namespace
+
 std::string format_summary(const std::vector<JobResult>& results) {
     std::string out;
     auto line = [&out](const char* format, auto... values) {
@@ -204,8 +214,22 @@ std::string format_summary(const std::vector<JobResult>& results) {
     size_t width = 5;
     for (const JobResult& r : results)
         width = std::max(width, fs::path(r.scene).filename().string().size());
-    line("%-*s  %5s  %-7s  %8s  %7s  %8s  %10s  %s\n", int(width), "scene", "frame", "status",
-         "time", "spp", "rays/s", "relMSE", "output / error");
+    // Denoised images add their estimate and the noisy image's error; without any, the
+    // table is as it was before denoising existed.
+    const bool denoised = std::any_of(results.begin(), results.end(), [](const JobResult& r) {
+        return r.denoise_relmse_estimate.has_value();
+    });
+    auto sci = [](const std::optional<double>& v, bool ran) {
+        char buf[32] = "-";
+        if (ran && v) std::snprintf(buf, sizeof buf, "%.4e", *v);
+        return std::string(buf);
+    };
+    auto denoise_columns = [&](const std::string& estimate, const std::string& noisy) {
+        return denoised ? "  " + pad(estimate, 10) + "  " + pad(noisy, 10) : std::string();
+    };
+    line("%-*s  %5s  %-7s  %8s  %7s  %8s  %10s%s  %s\n", int(width), "scene", "frame", "status",
+         "time", "spp", "rays/s", "relMSE", denoise_columns("estimate", "noisy").c_str(),
+         "output / error");
     size_t counts[4] = {0, 0, 0, 0};
     for (const JobResult& r : results) {
         static const char* const kStatus[] = {"ok", "partial", "failed", "skipped"};
@@ -216,12 +240,12 @@ std::string format_summary(const std::vector<JobResult>& results) {
             ran && r.seconds > 0 ? format_count(r.rays / r.seconds) : std::string("-");
         const std::string note =
             r.message.empty() ? r.output : (r.output.empty() ? "" : r.output + ": ") + r.message;
-        char relmse[32] = "-";
-        if (ran && r.relmse) std::snprintf(relmse, sizeof relmse, "%.4e", *r.relmse);
-        line("%-*s  %5s  %-7s  %8s  %7s  %8s  %10s  %s\n", int(width),
-             fs::path(r.scene).filename().string().c_str(), frame.c_str(),
-             kStatus[int(r.status)], ran ? format_duration(r.seconds).c_str() : "-",
-             ran ? std::to_string(r.spp).c_str() : "-", rate.c_str(), relmse, note.c_str());
+        line("%-*s  %5s  %-7s  %8s  %7s  %8s  %10s%s  %s\n", int(width),
+             fs::path(r.scene).filename().string().c_str(), frame.c_str(), kStatus[int(r.status)],
+             ran ? format_duration(r.seconds).c_str() : "-",
+             ran ? std::to_string(r.spp).c_str() : "-", rate.c_str(), sci(r.relmse, ran).c_str(),
+             denoise_columns(sci(r.denoise_relmse_estimate, ran), sci(r.noisy_relmse, ran)).c_str(),
+             note.c_str());
     }
     line("%zu images: %zu ok, %zu partial, %zu failed, %zu skipped\n", results.size(),
          counts[0], counts[1], counts[2], counts[3]);

@@ -49,10 +49,14 @@ struct JobResult {
     uint64_t rays = 0;
     uint64_t peak_memory = 0;      // of the process when the image was done
     std::optional<double> relmse;  // against --reference, when given
+    // --denoise: the denoiser's estimate of the image's relMSE, and the relMSE of the
+    // noisy image (before denoising) against --reference, when given.
+    std::optional<double> denoise_relmse_estimate, noisy_relmse;
 };
 
 // One row per job: scene, frame, status, time, spp, rays/s, relMSE against the
-// reference (when given), and the output or error.
+// reference (when given), and the output or error. When some image was denoised, two
+// more columns: the denoiser's estimated relMSE and the noisy image's relMSE.
 void print_summary(const std::vector<JobResult>& results);
 std::string format_summary(const std::vector<JobResult>& results);
 

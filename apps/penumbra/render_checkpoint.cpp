@@ -48,7 +48,8 @@ std::string render_fingerprint(const BatchJob& job, const SceneSetup& setup,
       << " target_error=" << o.target_error << " adaptive_min_spp=" << o.adaptive_min_spp
       << " clamp_direct=" << o.clamp_direct << " clamp_indirect=" << o.clamp_indirect
       << " regularize=" << o.regularize << " light_sampler=" << o.light_sampler
-      << " triangle_sampling=" << o.triangle_sampling << " env_sampling=" << o.env_sampling;
+      << " triangle_sampling=" << o.triangle_sampling << " env_sampling=" << o.env_sampling
+      << " denoise=" << o.denoise;
     for (float c : o.env_color) f << " env_color=" << c;
     for (float c : o.focus_on) f << " focus_on=" << c;
     return f.str();

@@ -9,16 +9,16 @@
 #include <tuple>
 
 #include "apps/penumbra/batch.h"
+#include "apps/penumbra/denoise_step.h"
 #include "apps/penumbra/interrupt.h"
 #include "apps/penumbra/output_options.h"
-#include "apps/penumbra/sampling_options.h"
 #include "apps/penumbra/render_checkpoint.h"
+#include "apps/penumbra/render_metadata.h"
 #include "apps/penumbra/scene_setup.h"
 #include "apps/penumbra/timeline_options.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/progress.h"
-#include "core/sampling/sampler.h"
 #include "integrators/render.h"
 #include "io/checkpoint.h"
 #include "io/image_writer.h"
@@ -78,6 +78,12 @@ double since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
+std::string format_scientific(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4e", v);
+    return buf;
+}
+
 // What the images of a batch share: the overall bar, the Ctrl-C count and the outputs
 // claimed so far (two images must not write one file).
 struct BatchState {
@@ -110,6 +116,94 @@ bool claim_output(const BatchJob& job, const std::string& output, BatchState& st
     return true;
 }
 
+// What one finished image's report reads.
+struct ImageReport {
+    const std::string& scene;
+    const std::string& output;
+    const std::string& preview;  // empty: none
+    const RenderCommandOptions& o;
+    const SceneSetup& setup;
+    const RenderStats& stats;
+    double write_seconds;
+    const RenderFilesResult& written;
+    const DenoiseStep* denoised;  // null: not denoised
+};
+
+// The lines on stderr after an image: what was rendered, how fast, the denoiser's
+// estimate and the errors against --reference.
+void print_image_report(const ImageReport& r) {
+    const RenderStats& stats = r.stats;
+    const SceneSetup& setup = r.setup;
+    const double pixels = double(setup.width) * setup.height;
+    const std::string spp_note =
+        r.o.target_error > 0
+            ? " at most, mean " +
+                  std::to_string(int(std::lround(double(stats.camera_samples) / pixels))) +
+                  " (adaptive), " + std::to_string(stats.active_pixels) + " pixels unconverged"
+        : stats.spp < r.o.spp ? " of " + std::to_string(r.o.spp)
+                              : "";
+    const std::string nonfinite =
+        stats.nonfinite_samples
+            ? ", " + std::to_string(stats.nonfinite_samples) + " NaN/Inf samples discarded"
+            : "";
+    std::fprintf(stderr,
+                 "%s -> %s%s%s%s\n"
+                 "  %dx%d, %u spp%s, integrator %s, camera '%s'\n"
+                 "  load %s, build %s (%zu meshes, %zu instances), render %s, write %s\n"
+                 "  %.2f M rays/s (%llu rays), %.2f M samples/s, peak memory %s%s\n",
+                 r.scene.c_str(), r.output.c_str(), r.preview.empty() ? "" : " + ",
+                 r.preview.c_str(), stats.interrupted ? " (partial)" : "", setup.width,
+                 setup.height, stats.spp, spp_note.c_str(), r.o.integrator.c_str(),
+                 setup.camera_desc.name.c_str(), format_duration(setup.load_seconds).c_str(),
+                 format_duration(setup.build_seconds).c_str(), setup.scene.objects.size(),
+                 setup.scene.instances.size(), format_duration(stats.seconds).c_str(),
+                 format_duration(r.write_seconds).c_str(),
+                 stats.seconds > 0 ? stats.rays / stats.seconds / 1e6 : 0.0,
+                 static_cast<unsigned long long>(stats.rays),
+                 stats.seconds > 0 ? stats.camera_samples / stats.seconds / 1e6 : 0.0,
+                 format_bytes(peak_memory_bytes()).c_str(), nonfinite.c_str());
+    if (r.denoised)
+        std::fprintf(stderr, "  denoised in %s by %s: estimated relMSE %.4e\n",
+                     format_duration(r.denoised->seconds).c_str(),
+                     r.denoised->beauty.method.c_str(), r.denoised->result.relmse_estimate);
+    if (r.written.mse)
+        std::fprintf(stderr, "  MSE %.4e, relMSE %.4e against %s%s\n", *r.written.mse,
+                     *r.written.relmse, r.o.reference.c_str(),
+                     r.written.noisy_mse
+                         ? (" (noisy: MSE " + format_scientific(*r.written.noisy_mse) +
+                            ", relMSE " + format_scientific(*r.written.noisy_relmse) + ")")
+                               .c_str()
+                         : "");
+}
+
+// The render loop's options for the job: its frame and band in the progress label, the
+// band's rows, the batch's interrupts and overall bar.
+RenderOptions job_render_options(const BatchJob& job, int height, BatchState& state) {
+    const RenderCommandOptions& o = job.options;
+    RenderOptions ropt = render_options_for(o, fs::path(job.scene).filename().string());
+    if (o.timeline.frame) ropt.label += " frame " + std::to_string(*o.timeline.frame);
+    if (job.band >= 0) {
+        std::tie(ropt.row_begin, ropt.row_end) = band_rows(height, job.band, o.bands);
+        ropt.label += " band " + std::to_string(job.band + 1) + "/" + std::to_string(o.bands);
+    }
+    ropt.interrupts = &state.interrupts;
+    ropt.batch = &state.progress;
+    return ropt;
+}
+
+// What the image writes to `output`, as the options say.
+RenderFiles render_files_for(const RenderCommandOptions& o, const std::string& output,
+                             const DenoiseStep* denoised) {
+    RenderFiles files;
+    files.exr = output;
+    if (!o.no_preview) files.preview = preview_path_for(output);
+    files.exposure = o.exposure;
+    files.exr_options = {o.half, o.compression};
+    files.reference = o.reference;
+    if (denoised) files.denoised = &denoised->beauty;
+    return files;
+}
+
 // The per-image pipeline: set up, render in passes, write. Errors propagate.
 void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
     const RenderCommandOptions& o = job.options;
@@ -127,14 +221,7 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
                                    ? band_output_path(result.output, job.band, o.bands)
                                    : result.output;
 
-    RenderOptions ropt = render_options_for(o, fs::path(path).filename().string());
-    if (o.timeline.frame) ropt.label += " frame " + std::to_string(*o.timeline.frame);
-    if (job.band >= 0) {
-        std::tie(ropt.row_begin, ropt.row_end) = band_rows(setup->height, job.band, o.bands);
-        ropt.label += " band " + std::to_string(job.band + 1) + "/" + std::to_string(o.bands);
-    }
-    ropt.interrupts = &state.interrupts;
-    ropt.batch = &state.progress;
+    RenderOptions ropt = job_render_options(job, setup->height, state);
 
     // Continue from a checkpoint of this very render; a stale or damaged one is named
     // and the render starts from sample 0.
@@ -190,118 +277,30 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
     // exists without what continues it.
     if (stats.interrupted) save_checkpoint(film, stats.spp);
 
-    auto t0 = Clock::now();
-    Metadata metadata = {
-        {"Software", std::string("penumbra ") + PENUMBRA_VERSION},
-        {"penumbra:scene", path},
-        {"penumbra:integrator", o.integrator},
-        {"penumbra:strategy", o.strategy},
-        {"penumbra:light_sampler", o.light_sampler},
-        {"penumbra:triangle_sampling", o.triangle_sampling},
-        // What the environment's light samples followed (none without an environment).
-        {"penumbra:env_sampling", environment_sampling_name(setup->lights->environment())},
-        {"penumbra:microfacet", o.microfacet},
-        {"penumbra:gltf_layering", o.gltf_layering},
-        {"penumbra:max_depth", std::to_string(o.max_depth)},
-        // How the image's light was set up: glTF light units, default lights, exposure.
-        {"penumbra:light_units", o.light_units},
-        {"penumbra:default_light", o.default_light},
-        {"penumbra:default_lights_added", setup->default_lights ? "1" : "0"},
-        {"penumbra:exposure", o.exposure},
-        {"penumbra:accelerator", o.accel},
-        {"penumbra:sampler", sampler_in_effect(parse_sampler_type(o.sampler), o.spp)},
-        {"penumbra:filter", o.filter},
-        // The samples actually rendered: fewer than asked after a time limit or Ctrl-C.
-        {"penumbra:spp", std::to_string(stats.spp)},
-        {"penumbra:spp_requested", std::to_string(o.spp)},
-        {"penumbra:partial", stats.interrupted ? "1" : "0"},
-        {"penumbra:seed", std::to_string(o.seed)},
-        // The exposure in animation seconds; equal for a still (time is its opening).
-        {"penumbra:time", std::to_string(setup->scene.shutter_open)},
-        {"penumbra:shutter_open", std::to_string(setup->scene.shutter_open)},
-        {"penumbra:shutter_close", std::to_string(setup->scene.shutter_close)},
-        // The lens as rendered (file values with command-line overrides): 0 is a pinhole.
-        {"penumbra:aperture_radius", cam_desc.aperture_radius},
-        {"penumbra:focus_distance", cam_desc.focus_distance},
-        {"penumbra:aperture_blades", cam_desc.aperture_blades},
-        {"penumbra:rays", std::to_string(stats.rays)},
-        {"penumbra:nonfinite_samples", std::to_string(stats.nonfinite_samples)},
-    };
-    if (o.timeline.frame)
-        metadata.push_back({"penumbra:frame", std::to_string(*o.timeline.frame)});
-    if (o.time_limit > 0)
-        metadata.push_back({"penumbra:time_limit", std::to_string(o.time_limit)});
-    for (auto& field : sampling_metadata(o)) metadata.push_back(std::move(field));
-    if (o.target_error > 0) {
-        // What the adaptive render did: mean samples per pixel, pixels left unconverged.
-        metadata.push_back({"penumbra:mean_spp",
-                            std::to_string(double(stats.camera_samples) /
-                                           (double(setup->width) * setup->height))});
-        metadata.push_back({"penumbra:unconverged_pixels", std::to_string(stats.active_pixels)});
-    }
-    // Timing differs from run to run, so it is opt-in: by default the same command
-    // writes a bitwise identical file (docs/conventions.md).
-    if (o.timing_metadata) {
-        metadata.push_back({"penumbra:render_seconds", float(stats.seconds)});
-        metadata.push_back({"penumbra:load_seconds", float(setup->load_seconds)});
-        metadata.push_back({"penumbra:build_seconds", float(setup->build_seconds)});
-    }
-    RenderFiles files;
-    files.exr = output;
-    if (!o.no_preview) files.preview = preview_path_for(output);
-    files.exposure = o.exposure;
-    files.exr_options = {o.half, o.compression};
-    files.reference = o.reference;
+    Metadata metadata = render_metadata(o, path, *setup, stats);
+    // Denoised after the render, before anything is written; a farm band is not (the
+    // merge denoises the assembled image).
+    const std::unique_ptr<DenoiseStep> denoised =
+        o.denoise && job.band < 0 ? denoise_film(film, o.threads) : nullptr;
+    if (denoised && o.timing_metadata)
+        metadata.push_back({"penumbra:denoise_seconds", float(denoised->seconds)});
+    const auto t0 = Clock::now();
+    const RenderFiles files = render_files_for(o, output, denoised.get());
     const RenderFilesResult written =
         write_render(files, film, *setup->color, cam_desc, std::move(metadata));
     result.relmse = written.relmse;
+    result.noisy_relmse = written.noisy_relmse;
+    if (denoised) result.denoise_relmse_estimate = denoised->result.relmse_estimate;
     result.peak_memory = peak_memory_bytes();
     std::error_code ec;
     if (!stats.interrupted) fs::remove(ckpt, ec);
-    const std::string& preview = files.preview;
     const double write_s = since(t0);
     result.status = stats.interrupted ? JobStatus::Partial : JobStatus::Ok;
     if (stats.interrupted)
-        result.message = "interrupted: partial image; the same command continues it from " +
-                         ckpt;
-
-    if (!o.quiet) {
-        std::fprintf(stderr,
-                     "%s -> %s%s%s%s\n"
-                     "  %dx%d, %u spp%s, integrator %s, camera '%s'\n"
-                     "  load %s, build %s (%zu meshes, %zu instances), render %s, write %s\n"
-                     "  %.2f M rays/s (%llu rays), %.2f M samples/s, peak memory %s%s\n",
-                     path.c_str(), output.c_str(), preview.empty() ? "" : " + ",
-                     preview.c_str(), stats.interrupted ? " (partial)" : "", setup->width,
-                     setup->height, stats.spp,
-                     o.target_error > 0
-                         ? (" at most, mean " +
-                            std::to_string(int(std::lround(double(stats.camera_samples) /
-                                                           (double(setup->width) *
-                                                            setup->height)))) +
-                            " (adaptive), " + std::to_string(stats.active_pixels) +
-                            " pixels unconverged")
-                               .c_str()
-                     : stats.spp < o.spp ? (" of " + std::to_string(o.spp)).c_str()
-                                         : "",
-                     o.integrator.c_str(), cam_desc.name.c_str(),
-                     format_duration(setup->load_seconds).c_str(),
-                     format_duration(setup->build_seconds).c_str(), setup->scene.objects.size(),
-                     setup->scene.instances.size(), format_duration(stats.seconds).c_str(),
-                     format_duration(write_s).c_str(),
-                     stats.seconds > 0 ? stats.rays / stats.seconds / 1e6 : 0.0,
-                     static_cast<unsigned long long>(stats.rays),
-                     stats.seconds > 0 ? stats.camera_samples / stats.seconds / 1e6 : 0.0,
-                     format_bytes(peak_memory_bytes()).c_str(),
-                     stats.nonfinite_samples
-                         ? (", " + std::to_string(stats.nonfinite_samples) +
-                            " NaN/Inf samples discarded")
-                               .c_str()
-                         : "");
-        if (written.mse)
-            std::fprintf(stderr, "  MSE %.4e, relMSE %.4e against %s\n", *written.mse,
-                         *written.relmse, o.reference.c_str());
-    }
+        result.message = "interrupted: partial image; the same command continues it from " + ckpt;
+    if (!o.quiet)
+        print_image_report(
+            {path, output, files.preview, o, *setup, stats, write_s, written, denoised.get()});
 }
 
 }  // namespace
@@ -337,8 +336,8 @@ int run_render_jobs(const std::vector<BatchJob>& jobs, const RenderCommandOption
                 r.message = e.what();
             }
             if (r.status == JobStatus::Skipped && !o.quiet)
-                std::fprintf(stderr, "%s: skipped, %s %s\n", job.scene.c_str(),
-                             r.output.c_str(), r.message.c_str());
+                std::fprintf(stderr, "%s: skipped, %s %s\n", job.scene.c_str(), r.output.c_str(),
+                             r.message.c_str());
         }
         progress.job_finished(r.rays);
         results.push_back(r);

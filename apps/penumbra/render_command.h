@@ -71,6 +71,9 @@ struct RenderCommandOptions {
     double target_error = 0;
     unsigned adaptive_min_spp = 0;
     float clamp_direct = 0, clamp_indirect = 0, regularize = 0;
+    // --denoise: the EXR's RGB is denoised after rendering; the samples then form two
+    // independently seeded halves, as the error AOV's (sampling_options.cpp).
+    bool denoise = false;
     // Checkpoints (io/checkpoint.h): written on an interrupt and every this many seconds
     // between passes; 0: only on an interrupt.
     double checkpoint_interval = 300;

@@ -31,6 +31,11 @@ void add_sampling_options(CLI::App* cmd, RenderCommandOptions& o) {
                     "least this roughness (Cycles' Filter Glossy; 0: off; biased)")
         ->capture_default_str()
         ->check(CLI::Range(0.0f, 1.0f));
+    cmd->add_flag("--denoise", o.denoise,
+                  "Denoise the EXR's RGB (and the preview) after rendering, feature-guided "
+                  "(NFOR); the unbiased estimate is kept as the layer Noisy.R/G/B and the "
+                  "header gets the denoiser's estimated relMSE. Like the error layer, it "
+                  "draws the samples as two independently seeded halves");
 }
 
 Metadata sampling_metadata(const RenderCommandOptions& o) {

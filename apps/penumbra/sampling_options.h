@@ -1,6 +1,7 @@
-// The options that decide how many samples each pixel takes and which are clamped:
-// adaptive sampling to an error target and firefly control (clamps, regularization).
-// Part of the image options, so `converge` configurations can compare them.
+// The options that decide how many samples each pixel takes, which are clamped and what
+// becomes of them: adaptive sampling to an error target, firefly control (clamps,
+// regularization) and denoising. Part of the image options, so `converge`
+// configurations can compare them.
 #pragma once
 
 #include <CLI/CLI.hpp>

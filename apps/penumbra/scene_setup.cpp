@@ -378,6 +378,7 @@ RenderOptions render_options_for(const RenderCommandOptions& o, const std::strin
     r.time = resolve_shutter(o.timeline).open;
     r.time_limit = o.time_limit;
     r.aovs = parse_aovs(o.aovs);
+    if (o.denoise) r.aovs.add(Aov::Denoise);
     r.target_error = o.target_error;
     r.min_spp = o.adaptive_min_spp;
     return r;

@@ -186,6 +186,22 @@ TEST(JobFile, AdaptiveAndFireflyKeys) {
     }
 }
 
+TEST(JobFile, DenoiseKey) {
+    const JobFile f = parse_job_file(
+        R"({"defaults": {"denoise": true},
+            "jobs": [{"scene": "a.gltf"}, {"scene": "b.gltf", "denoise": false}]})",
+        "/jobs/j.json");
+    EXPECT_EQ(f.defaults.denoise, true);
+    EXPECT_FALSE(f.jobs[0].settings.denoise);
+    EXPECT_EQ(f.jobs[1].settings.denoise, false);
+    try {
+        parse_job_file(R"({"jobs": [{"scene": "a.gltf", "denoise": 1}]})", "j.json");
+        FAIL() << "a number was taken for a flag";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()), "j.json: jobs[0].denoise: expected true or false");
+    }
+}
+
 TEST(JobFile, StrictAndTextureLimitKeys) {
     const JobFile f = parse_job_file(
         R"({"defaults": {"strict": true, "max_texture_pixels": 4096},

@@ -1,0 +1,21 @@
+#include "apps/penumbra/denoise_step.h"
+
+#include <tbb/task_arena.h>
+
+#include <chrono>
+
+namespace penumbra {
+
+std::unique_ptr<DenoiseStep> denoise_film(const Film& film, int threads, const NforParams& params) {
+    auto step = std::make_unique<DenoiseStep>();
+    step->params = params;
+    const auto start = std::chrono::steady_clock::now();
+    // In an arena of the render's size, so that --threads bounds the denoiser too.
+    tbb::task_arena arena(threads > 0 ? threads : tbb::this_task_arena::max_concurrency());
+    arena.execute([&] { step->result = denoise_nfor(film.denoise_input(), params); });
+    step->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    step->beauty = {&step->result.color, describe(params), step->result.relmse_estimate};
+    return step;
+}
+
+}  // namespace penumbra
