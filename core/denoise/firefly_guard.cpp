@@ -14,18 +14,21 @@ Planes max_channel(const Planes& p) {
     return m;
 }
 
-// The largest value in the 3 x 3 neighbourhood of (x, y), with or without the centre.
-float neighbourhood_max(const Planes& m, int x, int y, bool centre) {
-    float v = 0;
+// The median of the values around (x, y): its 8 neighbours in its own half and the 9
+// pixels at and around it in the other. A median, not a maximum, so that fireflies next
+// to each other (dense where caustics are) do not shield each other.
+float surroundings(const Planes& own, const Planes& other, int x, int y) {
+    float v[17];
+    int n = 0;
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
             const int xq = x + dx, yq = y + dy;
-            if ((dx == 0 && dy == 0 && !centre) || xq < 0 || yq < 0 || xq >= m.width ||
-                yq >= m.height)
-                continue;
-            v = std::max(v, m.at(0, xq, yq));
+            if (xq < 0 || yq < 0 || xq >= own.width || yq >= own.height) continue;
+            if (dx != 0 || dy != 0) v[n++] = own.at(0, xq, yq);
+            v[n++] = other.at(0, xq, yq);
         }
-    return v;
+    std::nth_element(v, v + n / 2, v + n);
+    return v[n / 2];
 }
 
 }  // namespace
@@ -45,9 +48,11 @@ size_t guard_fireflies(Planes& a, Planes& b, Planes& variance) {
                 Planes& own = half == 0 ? a : b;
                 const Planes &m_own = half == 0 ? ma : mb, &m_other = half == 0 ? mb : ma;
                 const float v = m_own.at(0, x, y);
+                // The other half's own value keeps a real small bright feature, which
+                // both halves show at the same pixel.
                 const float limit =
-                    kFireflyRatio * std::max({floor, neighbourhood_max(m_own, x, y, false),
-                                              neighbourhood_max(m_other, x, y, true)});
+                    kFireflyRatio *
+                    std::max({floor, surroundings(m_own, m_other, x, y), m_other.at(0, x, y)});
                 if (!(v > limit)) continue;
                 const float scale = limit / v;
                 for (int c = 0; c < 3; ++c) own.at(c, x, y) *= scale;

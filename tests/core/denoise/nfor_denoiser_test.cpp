@@ -181,6 +181,18 @@ TEST(FireflyGuard, HoldsBackALoneSpikeAndKeepsWhatBothHalvesShow) {
     EXPECT_FLOAT_EQ(d * d / 4, var.at(0, 2, 2));
 }
 
+// Where caustics make fireflies dense, neighbours do not shield each other.
+TEST(FireflyGuard, HoldsBackFirefliesSideBySide) {
+    Planes a(32, 32, 3, 1.0f), b(32, 32, 3, 1.0f), var(32, 32, 3, 0.01f);
+    for (int c = 0; c < 3; ++c) {
+        a.at(c, 10, 10) = a.at(c, 11, 10) = 300;
+        b.at(c, 10, 11) = 300;
+    }
+    EXPECT_EQ(3u, guard_fireflies(a, b, var));
+    EXPECT_LT(a.at(0, 11, 10), 10);
+    EXPECT_LT(b.at(0, 10, 11), 10);
+}
+
 // exp_neg's error: the series' truncation (1.1e-7 relative), the rounding of t = x log2(e)
 // to float (2^-24 relative, so x 6e-8 absolute in the exponent and ln 2 x that in the
 // result) and about ten roundings of the rest (6e-8 each).
