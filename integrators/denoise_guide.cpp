@@ -1,8 +1,30 @@
 #include "integrators/denoise_guide.h"
 
+#include "integrators/direct_lighting.h"
 #include "integrators/first_hit.h"
 
 namespace penumbra {
+
+namespace {
+
+// Whether one light sample from the surface is unoccluded: its shadow ray's
+// transmittance (through alpha-blended surfaces as the path tracer's), 0 for a light
+// behind the surface or none at all.
+float light_visibility(const RenderContext& ctx, const SurfacePoint& sp, const ShadingData& sd,
+                       float time, Rng& rng) {
+    const ShadingPoint ref{sp.p, sd.ng};
+    // Written out so every compiler draws the same.
+    const float u_choice = rng.next_float();
+    const float u0 = rng.next_float();
+    const Vec2 u(u0, rng.next_float());
+    const std::optional<SampledLight> chosen = ctx.lights.sample(ref, u_choice);
+    if (!chosen) return 0;
+    const std::optional<LightSample> ls = sample_light_Li(*chosen->light, ref, u, time);
+    if (!ls || !(ls->pdf > 0) || !(dot(ls->wi, sd.n_side) > 0)) return 0;
+    return shadow_transmittance(ctx, spawn_ray_to(RayOrigins(sp), ls->wi, ls->dist, ls->p, time));
+}
+
+}  // namespace
 
 GuideRecord denoise_guide(const Ray& camera_ray, const RenderContext& ctx, uint64_t key) {
     GuideRecord rec;
@@ -41,6 +63,7 @@ GuideRecord denoise_guide(const Ray& camera_ray, const RenderContext& ctx, uint6
         rec.albedo = throughput * sd.base_color;
         rec.normal = sd.frame.n;
         rec.depth = depth;
+        rec.visibility = light_visibility(ctx, sp, sd, camera_ray.time, rng);
         return rec;
     }
 }

@@ -18,7 +18,8 @@ inline constexpr int kMaxGuideBounces = 8;
 // whose sampled lobe is not specular. There: albedo = the specular samples' weights
 // (f |cos| / pdf, in importance transport, so refraction's radiance scaling stays out) x
 // the base colour; normal = the world shading normal facing the incoming ray; depth =
-// the path's length from the camera. Random numbers are hashed from `key` (seed, pixel,
+// the path's length from the camera; visibility = whether one light sample from there is
+// unoccluded (its transmittance). Random numbers are hashed from `key` (seed, pixel,
 // sample) as first_hit_aovs' are, so the beauty's sample streams do not change.
 GuideRecord denoise_guide(const Ray& ray, const RenderContext& ctx, uint64_t key);
 

@@ -8,12 +8,14 @@
 
 namespace penumbra {
 
-// Guide feature channels, in this order: albedo R, G, B; shading normal X, Y, Z; depth.
-// They describe the first non-specular surface a camera sample reaches (through mirrors
-// and smooth glass, as Cycles' and OIDN's guides do), the albedo tinted by the specular
-// surfaces on the way; a sample that escapes counts as zero in all seven.
-inline constexpr int kGuideChannels = 7;
-inline constexpr int kGuideAlbedo = 0, kGuideNormal = 3, kGuideDepth = 6;
+// Guide feature channels, in this order: albedo R, G, B; shading normal X, Y, Z; depth;
+// visibility. They describe the first non-specular surface a camera sample reaches
+// (through mirrors and smooth glass, as Cycles' and OIDN's guides do), the albedo tinted
+// by the specular surfaces on the way; visibility is whether one light sample from there
+// is unoccluded (NFOR's visibility feature: it carries shadow edges, which no other guide
+// does). A sample that escapes counts as zero in all eight.
+inline constexpr int kGuideChannels = 8;
+inline constexpr int kGuideAlbedo = 0, kGuideNormal = 3, kGuideDepth = 6, kGuideVisibility = 7;
 
 struct DenoiseInput {
     Image color_a, color_b;  // 3 channels: the means of the even and odd samples

@@ -24,12 +24,13 @@ Planes average(const Planes& a, const Planes& b) {
     return out;
 }
 
-// The guides' groups: albedo, normal and depth are each prefiltered with their own
+// The guides' groups: albedo, normal, depth and visibility are each prefiltered with their own
 // distances, so that one's edges do not blur another's.
 struct GuideGroup {
     int first, count;
 };
-constexpr GuideGroup kGuideGroups[] = {{kGuideAlbedo, 3}, {kGuideNormal, 3}, {kGuideDepth, 1}};
+constexpr GuideGroup kGuideGroups[] = {
+    {kGuideAlbedo, 3}, {kGuideNormal, 3}, {kGuideDepth, 1}, {kGuideVisibility, 1}};
 
 // Each guide group of `image` filtered by non-local means with distances from `guide`.
 Planes filter_guides(const Planes& image, const Planes& guide, const Planes& variance,
@@ -143,15 +144,15 @@ DenoiseResult denoise_nfor(const DenoiseInput& in, const NforParams& p) {
 
 std::string describe(const NforParams& p) {
     char text[320];
-    std::snprintf(text, sizeof text,
-                  "NFOR (Bitterli et al. 2016): first-order regression on albedo, normal and "
-                  "depth, window %dx%d, fits on every %dx%d pixels, patch %dx%d, bandwidths k "
-                  "%g/%g chosen per pixel by cross-validation of two sample halves, guide "
-                  "window %dx%d; firefly guard at %gx the surroundings",
-                  2 * p.window_radius + 1, 2 * p.window_radius + 1, p.center_stride,
-                  p.center_stride, 2 * p.patch_radius + 1, 2 * p.patch_radius + 1, p.k_small,
-                  p.k_large, 2 * p.feature_window_radius + 1, 2 * p.feature_window_radius + 1,
-                  kFireflyRatio);
+    std::snprintf(
+        text, sizeof text,
+        "NFOR (Bitterli et al. 2016): first-order regression on albedo, normal, depth "
+        "and visibility, window %dx%d, fits on every %dx%d pixels, patch %dx%d, bandwidths k "
+        "%g/%g chosen per pixel by cross-validation of two sample halves, guide "
+        "window %dx%d; firefly guard at %gx the surroundings",
+        2 * p.window_radius + 1, 2 * p.window_radius + 1, p.center_stride, p.center_stride,
+        2 * p.patch_radius + 1, 2 * p.patch_radius + 1, p.k_small, p.k_large,
+        2 * p.feature_window_radius + 1, 2 * p.feature_window_radius + 1, kFireflyRatio);
     return text;
 }
 

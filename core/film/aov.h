@@ -60,12 +60,14 @@ const std::vector<std::string>& aov_names();
 
 // The denoiser's guide features of one camera sample (core/denoise/denoise_input.h): the
 // first non-specular surface's albedo, tinted by the specular surfaces on the way, its
-// shading normal facing the incoming ray, and the length of the path to it. A sample
-// that escapes leaves all three zero.
+// shading normal facing the incoming ray, the length of the path to it, and whether a
+// light sample from it is unoccluded (its transmittance). A sample that escapes leaves
+// all four zero.
 struct GuideRecord {
     Spectrum albedo;
     Vec3 normal;
     float depth = 0;
+    float visibility = 0;
 };
 
 // What one camera sample saw first. Misses leave hit false; the film then counts them

@@ -13,8 +13,10 @@ namespace {
 
 // A sample's guide record as denoise_input.h's channels.
 std::array<float, kGuideChannels> guide_channels(const GuideRecord& g) {
-    static_assert(kGuideAlbedo == 0 && kGuideNormal == 3 && kGuideDepth == 6);
-    return {g.albedo.x, g.albedo.y, g.albedo.z, g.normal.x, g.normal.y, g.normal.z, g.depth};
+    static_assert(kGuideAlbedo == 0 && kGuideNormal == 3 && kGuideDepth == 6 &&
+                  kGuideVisibility == 7);
+    return {g.albedo.x, g.albedo.y, g.albedo.z, g.normal.x,
+            g.normal.y, g.normal.z, g.depth,    g.visibility};
 }
 
 // The variance of a weighted mean from its sums (sum w x, sum w x^2, sum w, sum w^2): the
