@@ -1,10 +1,12 @@
 #include "apps/penumbra/converge_command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
 
+#include "apps/penumbra/converge_measure.h"
 #include "apps/penumbra/scene_setup.h"
 #include "apps/penumbra/svg_plot.h"
 #include "core/convergence.h"
@@ -77,29 +79,15 @@ void add_converge_command(CLI::App& app, ConvergeOptions& o) {
 
 namespace {
 
-struct Config {
-    std::string name;
-    RenderCommandOptions options;
-};
-
-struct Checkpoint {
-    uint32_t spp = 0;
-    double seconds = 0, cpu_seconds = 0, mse = 0, relmse = 0;
-    double variance = 0;      // --bias-variance: the halves' estimate, relative as relMSE
-    double mean_spp = 0;      // samples per pixel on average (below spp when adaptive)
-    double target_error = 0;  // adaptive configurations: the target of this render
-    double time(const std::string& clock) const { return clock == "cpu" ? cpu_seconds : seconds; }
-};
-
 std::string trim(const std::string& s) {
     const size_t a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
     return a == std::string::npos ? "" : s.substr(a, b - a + 1);
 }
 
 // A configuration is the base options with its own image options parsed over them.
-Config parse_config(const RenderCommandOptions& base, const std::string& name,
-                    const std::string& args) {
-    Config c{trim(name), base};
+ConvergeConfig parse_config(const RenderCommandOptions& base, const std::string& name,
+                            const std::string& args) {
+    ConvergeConfig c{trim(name), base};
     if (c.name.empty()) throw SceneError("configuration '" + args + "' has no name");
     CLI::App parser{"configuration " + c.name};
     add_image_options(&parser, c.options);
@@ -111,8 +99,8 @@ Config parse_config(const RenderCommandOptions& base, const std::string& name,
     return c;
 }
 
-std::vector<Config> configs_of(const ConvergeOptions& o) {
-    std::vector<Config> configs;
+std::vector<ConvergeConfig> configs_of(const ConvergeOptions& o) {
+    std::vector<ConvergeConfig> configs;
     std::stringstream items(o.compare);
     std::string item;
     while (std::getline(items, item, ';')) {
@@ -136,98 +124,29 @@ Image render_image(const SceneSetup& s, const RenderOptions& ropt, RenderStats& 
     return render(s.context(), *s.camera, *s.integrator, ropt, &stats).resolve();
 }
 
-// Mean over pixels and R, G, B of the film's estimated variance / (r^2 + epsilon): the
-// variance part of its relMSE against r.
-double relative_variance(const Film& film, const Image& ref, double epsilon) {
-    double sum = 0;
-    for (int y = 0; y < film.height(); ++y)
-        for (int x = 0; x < film.width(); ++x) {
-            const Spectrum v = film.estimated_variance(x, y);
-            for (int c = 0; c < 3; ++c) {
-                const double r = ref.at(x, y)[c];
-                sum += v[c] / (r * r + epsilon);
-            }
-        }
-    return sum / (3.0 * film.width() * film.height());
-}
-
 Image render_reference(const ConvergeOptions& o, const RenderCommandOptions& base) {
     RenderCommandOptions ro = base;
     ro.spp = o.reference_spp;
     // Other sample streams than the measured renders: sharing their first samples would
     // correlate reference and image and understate the error.
     ro.seed = base.seed ^ 0x9e3779b97f4a7c15ull;
+    // The reference is the raw estimate: no sample split or guides for a denoiser.
+    ro.denoise = false;
     const std::unique_ptr<SceneSetup> s = setup_scene(ro, o.scene);
     RenderStats stats;
     const Image ref = render_image(*s, render_options_for(ro, "reference"), stats);
     const std::string path = (fs::path(o.out_dir) / "reference.exr").string();
     const std::string sampler = sampler_in_effect(parse_sampler_type(ro.sampler), ro.spp);
-    write_exr(path, ref, {{"penumbra:scene", o.scene},
-                          {"penumbra:spp", std::to_string(stats.spp)},
-                          {"penumbra:seed", std::to_string(ro.seed)},
-                          {"penumbra:sampler", sampler},
-                          {"penumbra:integrator", ro.integrator}});
+    write_exr(path, ref,
+              {{"penumbra:scene", o.scene},
+               {"penumbra:spp", std::to_string(stats.spp)},
+               {"penumbra:seed", std::to_string(ro.seed)},
+               {"penumbra:sampler", sampler},
+               {"penumbra:integrator", ro.integrator}});
     if (!base.quiet)
         std::printf("reference: %u spp in %s -> %s\n", stats.spp,
                     format_duration(stats.seconds).c_str(), path.c_str());
     return ref;
-}
-
-std::string fmt(const char* format, double v);
-
-std::vector<Checkpoint> measure(const ConvergeOptions& o, const Config& c, const Image& ref) {
-    const std::unique_ptr<SceneSetup> s = setup_scene(c.options, o.scene);
-    if (s->width != ref.width || s->height != ref.height)
-        throw SceneError("configuration '" + c.name + "' renders " + std::to_string(s->width) +
-                         "x" + std::to_string(s->height) + " but the reference is " +
-                         std::to_string(ref.width) + "x" + std::to_string(ref.height));
-    std::vector<RenderOptions> runs;
-    RenderOptions ropt = render_options_for(c.options, c.name);
-    ropt.progress = false;
-    if (o.bias_variance) ropt.aovs.add(Aov::Error);
-    if (ropt.target_error > 0) {
-        // Adaptive: the target halves in relMSE (E / sqrt 2) per checkpoint, ending at
-        // the configuration's, as many checkpoints as the spp sweep has; --max-spp caps.
-        ropt.spp = o.max_spp;
-        int count = 0;
-        for (uint64_t spp = o.min_spp; spp <= o.max_spp; spp *= 2) ++count;
-        const double last = ropt.target_error;
-        for (int k = count - 1; k >= 0; --k) {
-            ropt.target_error = last * std::pow(2.0, 0.5 * k);
-            runs.push_back(ropt);
-        }
-    } else if (o.times.empty()) {
-        for (uint64_t spp = o.min_spp; spp <= o.max_spp; spp *= 2) {
-            ropt.spp = static_cast<uint32_t>(spp);
-            runs.push_back(ropt);
-        }
-    } else {
-        ropt.spp = o.max_spp;
-        for (double t : o.times) {
-            ropt.time_limit = t;
-            runs.push_back(ropt);
-        }
-    }
-    std::vector<Checkpoint> points;
-    for (const RenderOptions& run : runs) {
-        RenderStats stats;
-        const double cpu0 = process_cpu_seconds();
-        const Film film = render(s->context(), *s->camera, *s->integrator, run, &stats);
-        const Image img = film.resolve();
-        Checkpoint p{stats.spp, stats.seconds, process_cpu_seconds() - cpu0,
-                     mean_squared_error(img, ref), relative_mse(img, ref, o.epsilon)};
-        if (o.bias_variance) p.variance = relative_variance(film, ref, o.epsilon);
-        p.mean_spp = double(stats.camera_samples) / (double(img.width) * img.height);
-        p.target_error = run.target_error;
-        points.push_back(p);
-        if (!c.options.quiet)
-            std::printf("%-14s %7u spp (mean %7.1f) %8s (cpu %8s)  MSE %.4e  relMSE %.4e%s\n",
-                        c.name.c_str(), p.spp, p.mean_spp, format_duration(p.seconds).c_str(),
-                        format_duration(p.cpu_seconds).c_str(), p.mse, p.relmse,
-                        o.bias_variance ? fmt("  variance %.4e", p.variance).c_str() : "");
-        std::fflush(stdout);
-    }
-    return points;
 }
 
 std::string fmt(const char* format, double v) {
@@ -249,6 +168,96 @@ std::string row(const std::string& config, const std::string& spp, const std::st
 
 }  // namespace
 
+namespace {
+
+std::string csv_header(const ConvergeOptions& o, bool denoise) {
+    // mse_x_time and relmse_x_time: inverse efficiency, with the --clock time.
+    // mean_spp: below spp where adaptive sampling stopped pixels early; target_error: the
+    // adaptive target (0: none); variance and bias2 with --bias-variance (empty for a
+    // denoised row); denoised (0 or 1) and the denoiser's relmse_estimate where some
+    // configuration denoises.
+    return std::string(
+               "config,spp,seconds,cpu_seconds,mse,relmse,mse_x_time,relmse_x_time,mean_spp,"
+               "target_error") +
+           (o.bias_variance ? ",variance,bias2" : "") +
+           (denoise ? ",denoised,relmse_estimate" : "") + "\n";
+}
+
+std::string csv_line(const ConvergeOptions& o, bool denoise, const ConvergeSeries& s,
+                     const ConvergePoint& p) {
+    const double t = p.time(o.clock);
+    std::string line = s.config + "," + std::to_string(p.spp) + fmt(",%.6g", p.seconds) +
+                       fmt(",%.6g", p.cpu_seconds) + fmt(",%.6g", p.mse) + fmt(",%.6g", p.relmse) +
+                       fmt(",%.6g", p.mse * t) + fmt(",%.6g", p.relmse * t) +
+                       fmt(",%.6g", p.mean_spp) + fmt(",%.6g", p.target_error);
+    if (o.bias_variance)
+        line += s.denoised ? ",," : fmt(",%.6g", p.variance) + fmt(",%.6g", p.relmse - p.variance);
+    if (denoise) line += s.denoised ? ",1" + fmt(",%.6g", p.relmse_estimate) : std::string(",0,");
+    return line + "\n";
+}
+
+// The summary table's row: the series' last checkpoint, its slope and time to the target.
+std::string table_row(const ConvergeOptions& o, const ConvergeSeries& s, PlotSeries& plot) {
+    std::vector<double> spp, mse;
+    for (const ConvergePoint& p : s.points) {
+        plot.x.push_back(p.time(o.clock));
+        plot.y.push_back(p.relmse);
+        spp.push_back(p.mean_spp);
+        mse.push_back(p.mse);
+    }
+    const std::optional<double> slope = log_log_slope(spp, mse);
+    const std::optional<TimeToError> reach = time_to_error(plot.x, plot.y, o.target_relmse);
+    const ConvergePoint& last = s.points.back();
+    const double t = last.time(o.clock);
+    return row(s.name, std::to_string(last.spp), fmt("%.3f", t), fmt("%.4e", last.mse),
+               fmt("%.4e", last.relmse), fmt("%.4e", last.mse * t),
+               slope ? fmt("%.3f", *slope) : "-",
+               reach ? (reach->at_most ? "<= " : "") + fmt("%.3g s", reach->seconds) +
+                           (reach->extrapolated ? " (extrapolated)" : "")
+                     : "not reached");
+}
+
+// --bias-variance: the last checkpoint's relMSE split, one line per raw series.
+std::string bias_variance_lines(const std::vector<ConvergeSeries>& all) {
+    std::string out =
+        "\nrelMSE = variance (from the two halves) + bias^2 (and the reference's noise), last "
+        "checkpoint:\n";
+    for (const ConvergeSeries& s : all) {
+        if (s.denoised) continue;
+        const ConvergePoint& p = s.points.back();
+        char line[256];
+        std::snprintf(line, sizeof line, "%-14s relMSE %.4e = variance %.4e + bias^2 %.4e\n",
+                      s.name.c_str(), p.relmse, p.variance, p.relmse - p.variance);
+        out += line;
+    }
+    return out;
+}
+
+// Each denoised series beside its raw one at the last checkpoint, with the denoiser's
+// own estimate against the measured relMSE.
+std::string denoise_lines(const ConvergeOptions& o, const std::vector<ConvergeSeries>& all) {
+    std::string out =
+        "\nraw and denoised, last checkpoint (the denoiser estimates its relMSE with "
+        "epsilon " +
+        fmt("%g", kRelMseEpsilon) + "):\n";
+    for (size_t i = 1; i < all.size(); ++i) {
+        if (!all[i].denoised) continue;
+        const ConvergePoint &raw = all[i - 1].points.back(), &dn = all[i].points.back();
+        char line[320];
+        std::snprintf(line, sizeof line,
+                      "%-14s relMSE raw %.4e, denoised %.4e (%.3gx lower; %s more), estimate "
+                      "%.4e (%.3gx the measured)\n",
+                      all[i].config.c_str(), raw.relmse, dn.relmse,
+                      dn.relmse > 0 ? raw.relmse / dn.relmse : 0.0,
+                      format_duration(dn.time(o.clock) - raw.time(o.clock)).c_str(),
+                      dn.relmse_estimate, dn.relmse > 0 ? dn.relmse_estimate / dn.relmse : 0.0);
+        out += line;
+    }
+    return out;
+}
+
+}  // namespace
+
 int run_converge_command(const ConvergeOptions& o) {
     if (o.base.quiet) set_log_level(LogLevel::Error);
     if (o.reference.empty() && o.reference_spp == 0)
@@ -265,77 +274,40 @@ int run_converge_command(const ConvergeOptions& o) {
             opts.base.height = ref.height;
         }
     }
-    const std::vector<Config> configs = configs_of(opts);
+    const std::vector<ConvergeConfig> configs = configs_of(opts);
     if (o.reference.empty()) ref = render_reference(opts, opts.base);
 
-    // mse_x_time and relmse_x_time: inverse efficiency, with the --clock time.
-    // mean_spp: below spp where adaptive sampling stopped pixels early; target_error: the
-    // adaptive target (0: none); variance and bias2 with --bias-variance.
-    std::string csv =
-        "config,spp,seconds,cpu_seconds,mse,relmse,mse_x_time,relmse_x_time,mean_spp,"
-        "target_error";
-    csv += o.bias_variance ? ",variance,bias2\n" : "\n";
+    std::vector<ConvergeSeries> all;
+    for (const ConvergeConfig& c : configs)
+        for (ConvergeSeries& s : measure_config(opts, c, ref)) all.push_back(std::move(s));
+    const bool denoise =
+        std::any_of(all.begin(), all.end(), [](const ConvergeSeries& s) { return s.denoised; });
+    std::string csv = csv_header(o, denoise);
     std::string table = row("config", "spp", o.clock + " s", "MSE", "relMSE", "MSE*s", "slope",
                             "time to relMSE " + fmt("%g", o.target_relmse));
     std::vector<PlotSeries> series;
-    // --bias-variance: the last checkpoint's relMSE split, one line per configuration.
-    std::string split = o.bias_variance ? "\nrelMSE = variance (from the two halves) + "
-                                          "bias^2 (and the reference's noise), last "
-                                          "checkpoint:\n"
-                                        : "";
-    auto fmt_row = [](const std::string& name, const Checkpoint& p) {
-        char line[256];
-        std::snprintf(line, sizeof line, "%-14s relMSE %.4e = variance %.4e + bias^2 %.4e\n",
-                      name.c_str(), p.relmse, p.variance, p.relmse - p.variance);
-        return std::string(line);
-    };
-    for (const Config& c : configs) {
-        const std::vector<Checkpoint> points = measure(opts, c, ref);
-        PlotSeries plot{c.name, {}, {}};
-        std::vector<double> spp, mse;
-        for (const Checkpoint& p : points) {
-            const double t = p.time(o.clock);
-            csv += c.name + "," + std::to_string(p.spp) + fmt(",%.6g", p.seconds) +
-                   fmt(",%.6g", p.cpu_seconds) + fmt(",%.6g", p.mse) + fmt(",%.6g", p.relmse) +
-                   fmt(",%.6g", p.mse * t) + fmt(",%.6g", p.relmse * t) +
-                   fmt(",%.6g", p.mean_spp) + fmt(",%.6g", p.target_error) +
-                   (o.bias_variance
-                        ? fmt(",%.6g", p.variance) + fmt(",%.6g", p.relmse - p.variance)
-                        : std::string()) +
-                   "\n";
-            plot.x.push_back(t);
-            plot.y.push_back(p.relmse);
-            spp.push_back(p.mean_spp);
-            mse.push_back(p.mse);
-        }
-        const std::optional<double> slope = log_log_slope(spp, mse);
-        const std::optional<TimeToError> reach = time_to_error(plot.x, plot.y, o.target_relmse);
-        const Checkpoint& last = points.back();
-        const double t = last.time(o.clock);
-        table += row(c.name, std::to_string(last.spp), fmt("%.3f", t), fmt("%.4e", last.mse),
-                     fmt("%.4e", last.relmse), fmt("%.4e", last.mse * t),
-                     slope ? fmt("%.3f", *slope) : "-",
-                     reach ? (reach->at_most ? "<= " : "") + fmt("%.3g s", reach->seconds) +
-                                 (reach->extrapolated ? " (extrapolated)" : "")
-                           : "not reached");
-        if (o.bias_variance)
-            split += fmt_row(c.name, last);
+    for (const ConvergeSeries& s : all) {
+        for (const ConvergePoint& p : s.points) csv += csv_line(o, denoise, s, p);
+        PlotSeries plot{s.name, {}, {}};
+        table += table_row(o, s, plot);
         series.push_back(std::move(plot));
     }
-    if (o.bias_variance) table += split;
+    if (o.bias_variance) table += bias_variance_lines(all);
+    if (denoise) table += denoise_lines(o, all);
     const std::string summary =
         "penumbra converge " + o.scene + ": " + std::to_string(ref.width) + "x" +
         std::to_string(ref.height) + ", reference " +
-        (o.reference.empty() ? std::to_string(o.reference_spp) + " spp (rendered)"
-                             : o.reference) +
+        (o.reference.empty() ? std::to_string(o.reference_spp) + " spp (rendered)" : o.reference) +
         ", relMSE epsilon " + fmt("%g", o.epsilon) + ", " + o.clock + " clock\n" +
         "last checkpoint per configuration; slope: least-squares fit of log(MSE) against "
-        "log(spp)\n" + table;
+        "log(spp)\n" +
+        table;
     const fs::path dir(o.out_dir);
     write_text_file((dir / "convergence.csv").string(), csv);
-    write_text_file((dir / "convergence.svg").string(),
-                    log_log_plot_svg(series, {"Convergence: " + fs::path(o.scene).filename().string(),
-                                              "render time (s, " + o.clock + " clock)", "relMSE"}));
+    write_text_file(
+        (dir / "convergence.svg").string(),
+        log_log_plot_svg(series, {"Convergence: " + fs::path(o.scene).filename().string(),
+                                  "render time (s, " + o.clock + " clock)", "relMSE"}));
     write_text_file((dir / "summary.txt").string(), summary);
     std::printf("%s", summary.c_str());
     std::printf("wrote %s, %s, %s\n", (dir / "convergence.csv").c_str(),

@@ -2,7 +2,9 @@
 // (or time checkpoints) in one or more configurations, measures each image against a
 // reference, and writes convergence.csv, a log-log convergence.svg and summary.txt. A
 // configuration with --target-error sweeps the target instead of the spp, so the time to
-// an error compares adaptive sampling with uniform sampling.
+// an error compares adaptive sampling with uniform sampling. A configuration with
+// --denoise also denoises each render: a second series, "NAME denoised", beside the raw
+// one, its time including the denoiser's, with the denoiser's own relMSE estimate.
 #pragma once
 
 #include <string>

@@ -1,5 +1,6 @@
 // End-to-end tests of `penumbra converge`: error falls as 1/spp for independent samples,
-// and the CSV, SVG plot and summary it writes are complete and well formed.
+// the CSV, SVG plot and summary it writes are complete and well formed, and --denoise
+// gives a denoised series beside the raw one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -231,6 +232,48 @@ TEST(ConvergeCli, SweepsAdaptiveTargetsAndSplitsBiasFromVariance) {
     EXPECT_NEAR(targets[1], 0.3 * std::sqrt(2.0), 1e-5);
     EXPECT_NEAR(targets[2], 0.3, 1e-6);
     EXPECT_NE(read_text(dir.file("bv/summary.txt")).find("bias^2"), std::string::npos);
+}
+
+TEST(ConvergeCli, DenoiseGivesRawAndDenoisedSeriesSideBySide) {
+    const test::ScratchDir dir;
+    const std::string scene = write_area_light_scene(dir);
+    const test::CliResult r = run_penumbra(
+        {"converge", scene, "--reference-spp", "64", "--width", "24", "-o", dir.file("dn"),
+         "--max-spp", "4", "--config", "plain:", "--config", "dn:--denoise", "-q"});
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::istringstream in(read_text(dir.file("dn/convergence.csv")));
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line,
+              "config,spp,seconds,cpu_seconds,mse,relmse,mse_x_time,relmse_x_time,"
+              "mean_spp,target_error,denoised,relmse_estimate");
+    // Per configuration and denoised flag: the spp column (1, 2, 4) and the relMSEs.
+    std::map<std::string, std::vector<double>> spp, relmse, estimate;
+    while (std::getline(in, line)) {
+        std::istringstream fields(line);
+        std::string f[12];
+        for (std::string& v : f) std::getline(fields, v, ',');
+        const std::string key = f[0] + "/" + f[10];
+        spp[key].push_back(std::stod(f[1]));
+        relmse[key].push_back(std::stod(f[5]));
+        if (f[10] == "1")
+            estimate[key].push_back(std::stod(f[11]));
+        else
+            EXPECT_EQ(f[11], "") << line;
+    }
+    const std::vector<double> sweep = {1, 2, 4};
+    EXPECT_EQ(spp, (std::map<std::string, std::vector<double>>{
+                       {"plain/0", sweep}, {"dn/0", sweep}, {"dn/1", sweep}}));
+    // The denoised series measures other images than the raw one, from the same renders.
+    EXPECT_NE(relmse["dn/0"], relmse["dn/1"]);
+    ASSERT_EQ(estimate["dn/1"].size(), 3u);
+    for (double e : estimate["dn/1"]) EXPECT_TRUE(std::isfinite(e)) << e;
+    const std::string svg = read_text(dir.file("dn/convergence.svg"));
+    EXPECT_EQ(svg_series(svg).size(), 3u);
+    EXPECT_NE(svg.find(">dn denoised<"), std::string::npos);
+    const std::string summary = read_text(dir.file("dn/summary.txt"));
+    EXPECT_NE(summary.find("dn denoised"), std::string::npos) << summary;
+    EXPECT_NE(summary.find("raw and denoised"), std::string::npos) << summary;
 }
 
 TEST(ConvergeCli, BadConfigurationOrMissingReferenceIsAnError) {
