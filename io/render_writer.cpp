@@ -9,6 +9,7 @@
 #include "core/camera/camera_matrices.h"
 #include "core/convergence.h"
 #include "core/error.h"
+#include "io/denoise_layers.h"
 
 namespace penumbra {
 
@@ -52,19 +53,6 @@ std::string full_precision(double v) {
     return buf;
 }
 
-// The film's beauty with its RGB replaced by the denoised colour; the film's own is kept
-// in `noisy`, the layout the same, so both take the same exposure and conversion.
-void use_denoised(Image& working, const Image& denoised, Image& noisy) {
-    CHECK(denoised.width == working.width && denoised.height == working.height &&
-              denoised.channels == 3,
-          "denoised image " << denoised.width << "x" << denoised.height << "x" << denoised.channels
-                            << " for a " << working.width << "x" << working.height << " film");
-    noisy = working;
-    for (size_t p = 0; p < size_t(working.width) * working.height; ++p)
-        for (int c = 0; c < 3; ++c)
-            working.pixels[p * size_t(working.channels) + size_t(c)] = denoised.pixels[p * 3 + c];
-}
-
 // RGB of an RGB(A) image.
 Image rgb_of(const Image& image) {
     Image out(image.width, image.height, 3);
@@ -84,6 +72,35 @@ Image read_reference(const std::string& path, const Image& beauty) {
 }
 
 }  // namespace
+
+Beauty make_beauty(Image working, float exposure, const ColorPipeline& color) {
+    expose(working, std::exp2(exposure));
+    Beauty beauty;
+    beauty.output = working;
+    color.to_output(beauty.output);
+    beauty.working = std::move(working);
+    return beauty;
+}
+
+Beauty denoised_beauty(const DenoisedBeauty& denoised, const Image& alpha, float exposure,
+                       const ColorPipeline& color) {
+    const Image& rgb = *denoised.color;
+    CHECK(rgb.width == alpha.width && rgb.height == alpha.height && rgb.channels == 3 &&
+              alpha.channels == 4,
+          "denoised image " << rgb.width << "x" << rgb.height << "x" << rgb.channels << " for a "
+                            << alpha.width << "x" << alpha.height << "x" << alpha.channels
+                            << " beauty");
+    Image working = alpha;
+    for (size_t p = 0; p < size_t(rgb.width) * rgb.height; ++p)
+        for (size_t c = 0; c < 3; ++c) working.pixels[p * 4 + c] = rgb.pixels[p * 3 + c];
+    return make_beauty(std::move(working), exposure, color);
+}
+
+std::vector<std::pair<std::string, std::string>> denoise_attributes(
+    const DenoisedBeauty& denoised) {
+    return {{"penumbra:denoise", denoised.method},
+            {"penumbra:denoise_relmse_estimate", full_precision(denoised.relmse_estimate)}};
+}
 
 AovLayers aov_layers(const Film& film, const ColorPipeline& color, float radiance_scale) {
     AovLayers out;
@@ -146,48 +163,48 @@ Image read_beauty(const std::string& path) {
 RenderFilesResult write_render(const RenderFiles& files, const Film& film,
                                const ColorPipeline& color, const CameraDesc& camera,
                                Metadata metadata) {
-    const float scale = std::exp2(files.exposure);
-    Image working = film.resolve();
-    Image noisy;  // the film's own beauty when denoised, as `beauty` is made
-    if (files.denoised) use_denoised(working, *files.denoised->color, noisy);
-    expose(working, scale);
-    Image beauty = working;
-    color.to_output(beauty);
+    Image resolved = film.resolve();
+    Beauty beauty, noisy;  // noisy: the film's own estimate when the denoiser replaced it
     if (files.denoised) {
-        expose(noisy, scale);
-        color.to_output(noisy);
-        metadata.push_back({"penumbra:denoise", files.denoised->method});
-        metadata.push_back(
-            {"penumbra:denoise_relmse_estimate", full_precision(files.denoised->relmse_estimate)});
+        beauty = denoised_beauty(*files.denoised, resolved, files.exposure, color);
+        noisy = make_beauty(std::move(resolved), files.exposure, color);
+        for (auto& [key, value] : denoise_attributes(*files.denoised))
+            metadata.push_back({key, value});
+    } else {
+        beauty = make_beauty(std::move(resolved), files.exposure, color);
     }
 
     RenderFilesResult result;
     if (!files.reference.empty()) {
-        const Image ref = read_reference(files.reference, beauty);
-        result.mse = mean_squared_error(beauty, ref);
-        result.relmse = relative_mse(beauty, ref);
+        const Image ref = read_reference(files.reference, beauty.output);
+        result.mse = mean_squared_error(beauty.output, ref);
+        result.relmse = relative_mse(beauty.output, ref);
         metadata.push_back({"penumbra:reference", files.reference});
         metadata.push_back({"penumbra:mse", *result.mse});
         metadata.push_back({"penumbra:relmse", *result.relmse});
         metadata.push_back({"penumbra:relmse_epsilon", kRelMseEpsilon});
         if (files.denoised) {
-            result.noisy_mse = mean_squared_error(noisy, ref);
-            result.noisy_relmse = relative_mse(noisy, ref);
+            result.noisy_mse = mean_squared_error(noisy.output, ref);
+            result.noisy_relmse = relative_mse(noisy.output, ref);
             metadata.push_back({"penumbra:noisy_mse", *result.noisy_mse});
             metadata.push_back({"penumbra:noisy_relmse", *result.noisy_relmse});
         }
     }
     for (auto& entry : color_metadata(color)) metadata.push_back(std::move(entry));
-    for (auto& entry : camera_metadata(camera, beauty.width, beauty.height))
+    for (auto& entry : camera_metadata(camera, film.width(), film.height()))
         metadata.push_back(std::move(entry));
 
-    const AovLayers aovs = aov_layers(film, color, scale);
-    std::vector<ExrLayer> layers = {{"", {"R", "G", "B", "A"}, &beauty, false}};
-    const Image noisy_rgb = files.denoised ? rgb_of(noisy) : Image();
+    const AovLayers aovs = aov_layers(film, color, std::exp2(files.exposure));
+    std::vector<ExrLayer> layers = {{"", {"R", "G", "B", "A"}, &beauty.output, false}};
+    const Image noisy_rgb = files.denoised ? rgb_of(noisy.output) : Image();
     if (files.denoised) layers.push_back({"Noisy", {"R", "G", "B"}, &noisy_rgb, false});
     layers.insert(layers.end(), aovs.layers.begin(), aovs.layers.end());
+    if (files.denoise_input) {
+        const std::vector<ExrLayer> input = denoise_input_layers(*files.denoise_input);
+        layers.insert(layers.end(), input.begin(), input.end());
+    }
     write_exr(files.exr, layers, metadata, files.exr_options);
-    if (!files.preview.empty()) write_preview(files.preview, working, color);
+    if (!files.preview.empty()) write_preview(files.preview, beauty.working, color);
     return result;
 }
 

@@ -5,8 +5,10 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "core/denoise/denoise_input.h"
 #include "core/film/film.h"
 #include "core/scene/scene.h"
 #include "io/color.h"
@@ -33,6 +35,10 @@ struct RenderFiles {
     // the RGB is), and the header gets "penumbra:denoise" (the method) and
     // "penumbra:denoise_relmse_estimate".
     const DenoisedBeauty* denoised = nullptr;
+    // Set (a row band of a farm render that denoises): the beauty stays the film's, and
+    // the denoiser's input is added as full-float layers (io/denoise_layers.h), from which
+    // the farm's merge denoises the assembled image.
+    const DenoiseInput* denoise_input = nullptr;
 };
 
 struct RenderFilesResult {
@@ -52,6 +58,22 @@ struct RenderFilesResult {
 RenderFilesResult write_render(const RenderFiles& files, const Film& film,
                                const ColorPipeline& color, const CameraDesc& camera,
                                Metadata metadata);
+
+// A render's beauty as its files hold it, made from a working-space RGBA image: scaled by
+// 2^exposure (colour, not alpha) for the preview, and that in the output space for the
+// EXR. write_render and the farm's merge both make theirs here, so they agree bit for bit.
+struct Beauty {
+    Image working;  // RGBA, exposed, working space: what write_preview takes
+    Image output;   // RGBA, exposed, output space: the EXR's R, G, B, A
+};
+Beauty make_beauty(Image working, float exposure, const ColorPipeline& color);
+// The beauty of a denoised render: denoised's colour (working space, 3 channels) with
+// alpha's alpha (channel 3 of an RGBA image the same size; its colour is not read).
+Beauty denoised_beauty(const DenoisedBeauty& denoised, const Image& alpha, float exposure,
+                       const ColorPipeline& color);
+// The header strings of a denoised render: "penumbra:denoise" (the method) and
+// "penumbra:denoise_relmse_estimate" (every digit of the double).
+std::vector<std::pair<std::string, std::string>> denoise_attributes(const DenoisedBeauty& denoised);
 
 // The EXR layers of film's AOVs, named as Blender's compositor and Nuke expect a
 // "pass.channel" pair: Albedo.{R,G,B}, Normal.{X,Y,Z}, Depth.Z, Position.{X,Y,Z},
