@@ -3,6 +3,7 @@
 #include <sched.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -148,9 +149,17 @@ int run_submit(const FarmOptions& o) {
     }
     std::string dependency = "--dependency=afterany";
     for (const std::string& id : ids) dependency += ":" + id;
+    // A merge that denoises a banded image runs the denoiser on all of it: it gets the
+    // tasks' CPUs. Otherwise it only copies rows.
+    const bool merge_denoises =
+        std::any_of(plan.jobs.begin(), plan.jobs.end(), [](const BatchJob& j) {
+            return j.options.denoise && j.options.bands > 1;
+        });
+    const int merge_cpus = merge_denoises && o.cpus_per_task > 0 ? o.cpus_per_task : 1;
     std::vector<std::string> args = common;
     args.insert(args.end(), {dependency, "--job-name=penumbra-merge:" + name,
-                             "--output=" + dir + "/logs/merge-%j.log", "--cpus-per-task=1"});
+                             "--output=" + dir + "/logs/merge-%j.log",
+                             "--cpus-per-task=" + std::to_string(merge_cpus)});
     args.insert(args.end(), extra.begin(), extra.end());
     const std::string merge_id = sbatch(args, dir + "/merge.sh");
     jobs_txt += "merge " + merge_id + "\n";

@@ -4,12 +4,17 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "apps/penumbra/denoise_step.h"
 #include "apps/penumbra/farm_plan.h"
 #include "core/error.h"
+#include "core/log.h"
 #include "io/atomic_file.h"
 #include "io/band_merge.h"
+#include "io/color.h"
+#include "io/denoise_layers.h"
 #include "io/image_writer.h"
 #include "io/render_output.h"
+#include "io/render_writer.h"
 
 namespace penumbra {
 
@@ -19,6 +24,40 @@ namespace {
 
 std::string band_name(int band, int bands) {
     return "band " + std::to_string(band + 1) + "/" + std::to_string(bands);
+}
+
+// What the merge of a render that denoises adds to the assembled image's file.
+struct MergedDenoise {
+    HeaderStrings attributes;  // penumbra:denoise and its estimate
+    Image preview;             // the preview's image (Beauty::working); empty: none
+};
+
+// The merge of a render that denoises, after the bands are assembled: the whole image's
+// denoiser input from the bands' layers, denoised as one machine denoises (the same
+// parameters, and the same bits for any thread count), and the file made as write_render
+// makes a denoised render's: the RGB denoised in the job's exposure and output space, the
+// assembled RGB (the film's estimate) as the layer Noisy. The input's layers are left out.
+MergedDenoise denoise_merged(const BatchJob& job, const ColorPipeline& color, MergedImage& image,
+                             uint32_t spp, JobResult& r) {
+    const RenderCommandOptions& o = job.options;
+    const DenoiseInput input = read_denoise_input(
+        [&](const std::vector<std::string>& names) { return image.channels(names); });
+    image.remove_channels(std::string(kDenoiseInputLayer) + ".");
+    // A band stopped by its time limit after one sample leaves nothing to denoise with.
+    if (spp < kDenoiseMinSpp) {
+        LOG_WARNING(r.output << ": " << too_few_samples_to_denoise(spp));
+        return {};
+    }
+    const std::unique_ptr<DenoiseStep> step = denoise(input, o.threads);
+    Beauty beauty =
+        denoised_beauty(step->beauty, image.channels({"R", "G", "B", "A"}), o.exposure, color);
+    image.insert_channels("A", {"Noisy.R", "Noisy.G", "Noisy.B"}, "R",
+                          image.channels({"R", "G", "B"}));
+    image.set_channels({"R", "G", "B", "A"}, beauty.output);
+    r.denoise_relmse_estimate = step->result.relmse_estimate;
+    MergedDenoise out{denoise_attributes(step->beauty), Image()};
+    if (!o.no_preview) out.preview = std::move(beauty.working);
+    return out;
 }
 
 // Merges the bands of one image whose tasks all rendered (or skipped) their band.
@@ -55,12 +94,26 @@ void merge_image(const BatchJob& job, const std::vector<TaskRecord>& bands, JobR
         r.peak_memory = std::max(r.peak_memory, bands[size_t(b)].results[0].peak_memory);
     }
     // The header as one machine writes it: these are the only values that differ by band.
-    merge_bands(exr, r.output,
-                {{"penumbra:rays", std::to_string(rays)},
-                 {"penumbra:nonfinite_samples", std::to_string(nonfinite)},
-                 {"penumbra:spp", std::to_string(spp)},
-                 {"penumbra:partial", partial ? "1" : "0"}});
-    if (png.size() == exr.size()) merge_bands(png, preview_path_for(r.output));
+    HeaderStrings header = {{"penumbra:rays", std::to_string(rays)},
+                            {"penumbra:nonfinite_samples", std::to_string(nonfinite)},
+                            {"penumbra:spp", std::to_string(spp)},
+                            {"penumbra:partial", partial ? "1" : "0"}};
+    MergedImage image(exr);
+    // The bands' previews show the film's estimate: a denoised image's is made anew.
+    bool merge_previews = png.size() == exr.size();
+    if (job.options.denoise) {
+        const ColorPipeline color(job.options.color);
+        const MergedDenoise denoised = denoise_merged(job, color, image, spp, r);
+        header.insert(header.end(), denoised.attributes.begin(), denoised.attributes.end());
+        image.write(r.output, header);
+        if (denoised.preview.width > 0) {
+            write_preview(preview_path_for(r.output), denoised.preview, color);
+            merge_previews = false;
+        }
+    } else {
+        image.write(r.output, header);
+    }
+    if (merge_previews) merge_bands(png, preview_path_for(r.output));
     r.spp = spp;
     r.rays = rays;
     r.status = partial ? JobStatus::Partial : JobStatus::Ok;

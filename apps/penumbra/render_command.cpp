@@ -191,9 +191,10 @@ RenderOptions job_render_options(const BatchJob& job, int height, BatchState& st
     return ropt;
 }
 
-// What the image writes to `output`, as the options say.
+// What the image writes to `output`, as the options say. band_input: a band's of a
+// render that denoises.
 RenderFiles render_files_for(const RenderCommandOptions& o, const std::string& output,
-                             const DenoiseStep* denoised) {
+                             const DenoiseStep* denoised, const DenoiseInput* band_input) {
     RenderFiles files;
     files.exr = output;
     if (!o.no_preview) files.preview = preview_path_for(output);
@@ -201,7 +202,22 @@ RenderFiles render_files_for(const RenderCommandOptions& o, const std::string& o
     files.exr_options = {o.half, o.compression};
     files.reference = o.reference;
     if (denoised) files.denoised = &denoised->beauty;
+    files.denoise_input = band_input;
     return files;
+}
+
+// Denoised after the render, before anything is written. A farm band is not: the
+// denoiser's windows reach across band edges, so the band writes the denoiser's input
+// and the merge denoises the assembled image (apps/penumbra/farm_merge.cpp).
+std::unique_ptr<DenoiseStep> denoise_job(const BatchJob& job, const Film& film, uint32_t spp,
+                                         const std::string& output) {
+    if (!job.options.denoise || job.band >= 0) return nullptr;
+    // A time limit or an interrupt can stop a render after its first pass of one sample.
+    if (spp < kDenoiseMinSpp) {
+        LOG_WARNING(output << ": " << too_few_samples_to_denoise(spp));
+        return nullptr;
+    }
+    return denoise_film(film, job.options.threads);
 }
 
 // The per-image pipeline: set up, render in passes, write. Errors propagate.
@@ -278,14 +294,14 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
     if (stats.interrupted) save_checkpoint(film, stats.spp);
 
     Metadata metadata = render_metadata(o, path, *setup, stats);
-    // Denoised after the render, before anything is written; a farm band is not (the
-    // merge denoises the assembled image).
-    const std::unique_ptr<DenoiseStep> denoised =
-        o.denoise && job.band < 0 ? denoise_film(film, o.threads) : nullptr;
+    const std::unique_ptr<DenoiseStep> denoised = denoise_job(job, film, stats.spp, output);
     if (denoised && o.timing_metadata)
         metadata.push_back({"penumbra:denoise_seconds", float(denoised->seconds)});
+    const DenoiseInput band_input =
+        o.denoise && job.band >= 0 ? film.denoise_input() : DenoiseInput();
     const auto t0 = Clock::now();
-    const RenderFiles files = render_files_for(o, output, denoised.get());
+    const RenderFiles files =
+        render_files_for(o, output, denoised.get(), band_input.width() > 0 ? &band_input : nullptr);
     const RenderFilesResult written =
         write_render(files, film, *setup->color, cam_desc, std::move(metadata));
     result.relmse = written.relmse;

@@ -2,12 +2,13 @@
 // a render with a checkpoint and the same command finishes it bit for bit as an
 // uninterrupted render; kill -9 loses only the work since the last timed checkpoint; a
 // stale checkpoint is not resumed; and `farm task` for every work item plus `farm merge`
-// writes images (banded or not, AOVs, half) with the pixels of `render --job`, the
-// tasks run under every Embree ISA the CPU has.
+// writes images (banded or not, AOVs, half, denoised) with the pixels and header of
+// `render --job`, the tasks run under every Embree ISA the CPU has.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
@@ -183,6 +184,70 @@ TEST(FarmCli, TasksAndMergeWriteTheImagesOfRenderJob) {
     EXPECT_FALSE(fs::exists(dir.file("farm/banded.band-2-of-3.exr")));
     EXPECT_FALSE(fs::exists(dir.file("farm/banded.band-2-of-3.png")));
     EXPECT_TRUE(fs::exists(dir.file("farm.farm/summary.txt")));
+}
+
+// Denoised images: one in float with AOVs, an exposure and an output space other than the
+// working space (so the denoised RGB goes through the writer's whole conversion), one in
+// half; out_dir differs between the two copies.
+std::string denoise_job_file(const test::ScratchDir& dir, const std::string& name,
+                             const std::string& out_dir) {
+    return dir.write(name, R"({
+  "defaults": {"width": 24, "spp": 4, "denoise": true, "out_dir": ")" +
+                               out_dir + R"("},
+  "jobs": [
+    {"scene": ")" + kCornell + R"(", "bands": 3, "name": "denoised.exr",
+     "aov": "albedo,depth,variance", "exposure": 0.5, "working_space": "ACEScg",
+     "output_colorspace": "ACES2065-1"},
+    {"scene": ")" + kCornell + R"(", "bands": 2, "half": true, "name": "denoised_half.exr"}
+  ]
+})");
+}
+
+TEST(FarmCli, MergeDenoisesTheAssembledBandsToTheBitsOfOneMachine) {
+    const test::ScratchDir dir;
+    const std::string ref_job = denoise_job_file(dir, "ref.json", "ref");
+    const std::string farm_job = denoise_job_file(dir, "farm.json", "farm");
+    const test::CliResult ref = run_penumbra({"render", "--job", ref_job, "-q"});
+    ASSERT_EQ(ref.status, 0) << ref.output;
+    // 3 + 2 bands, each under another of this CPU's Embree ISAs.
+    const std::vector<std::string> isas = test::embree_isas();
+    for (int i = 0; i < 5; ++i) {
+        const test::ScopedEmbreeIsa isa(isas.empty() ? "" : isas[i % isas.size()]);
+        const test::CliResult t =
+            run_penumbra({"farm", "task", farm_job, "--index", std::to_string(i)});
+        EXPECT_EQ(t.status, 0) << i << ": " << t.output;
+    }
+    // A band carries the denoiser's input, full float under half; it is not denoised.
+    {
+        const std::string band = dir.file("farm/denoised_half.band-1-of-2.exr");
+        std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(band);
+        ASSERT_TRUE(in) << band;
+        const int visibility = in->spec().channelindex("DenoiseInput.GuideB.Visibility");
+        ASSERT_GE(visibility, 0);
+        EXPECT_EQ(in->spec().channelformat(visibility), OIIO::TypeDesc::FLOAT);
+        EXPECT_EQ(in->spec().channelformat(in->spec().channelindex("R")), OIIO::TypeDesc::HALF);
+        EXPECT_EQ(in->spec().get_string_attribute("penumbra:denoise", "<none>"), "<none>");
+    }
+    const test::CliResult m = run_penumbra({"farm", "merge", farm_job});
+    EXPECT_EQ(m.status, 0) << m.output;
+    EXPECT_NE(m.output.find("estimate"), std::string::npos) << m.output;
+    for (const char* name :
+         {"denoised.exr", "denoised.png", "denoised_half.exr", "denoised_half.png"}) {
+        EXPECT_TRUE(same_pixels(dir.file(std::string("ref/") + name),
+                                dir.file(std::string("farm/") + name)))
+            << name;
+    }
+    for (const char* name : {"denoised.exr", "denoised_half.exr"}) {
+        const std::string farm = dir.file(std::string("farm/") + name);
+        EXPECT_EQ(header(dir.file(std::string("ref/") + name)), header(farm)) << name;
+        EXPECT_NE(attribute(farm, "penumbra:denoise"), "<none>") << name;
+        EXPECT_NE(attribute(farm, "penumbra:denoise_relmse_estimate"), "<none>") << name;
+        const test::Pixels p = test::read_pixels(farm);
+        EXPECT_NE(std::find(p.channels.begin(), p.channels.end(), "Noisy.R"), p.channels.end());
+        for (const std::string& c : p.channels)
+            EXPECT_EQ(c.rfind("DenoiseInput.", 0), std::string::npos) << c;
+    }
+    EXPECT_FALSE(fs::exists(dir.file("farm/denoised.band-3-of-3.exr")));
 }
 
 TEST(FarmCli, ATaskRefusesAJobFileChangedSinceSubmit) {

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The farm end to end on a real Slurm cluster it starts itself (tests/farm/slurm_cluster.sh,
 # single node, localhost): `farm submit --wait` on a job file with several scenes, an
-# animation's frames, banded images and a broken scene writes every image with the pixels
-# of `render --job` on one machine and names the broken scene; a task stopped with
+# animation's frames, banded images (one denoised by the merge) and a broken scene writes
+# every image with the pixels of `render --job` on one machine and names the broken scene; a task stopped with
 # SIGTERM and requeued continues from its checkpoint to the same pixels. Exits 77 (ctest:
 # skipped) without Slurm or root. Usage: run_slurm_test.sh PENUMBRA_BINARY
 set -euo pipefail
@@ -67,7 +67,9 @@ write_job() {
      "frames_per_task": 2},
     {"scene": "broken.gltf"},
     {"scene": "$repo/scenes/soft-shadows.gltf", "name": "soft_half.exr", "half": true,
-     "bands": 2}
+     "bands": 2},
+    {"scene": "$cornell", "name": "denoised_banded.exr", "bands": 2, "denoise": true,
+     "aov": "albedo"}
   ]
 }
 JSON
@@ -88,11 +90,12 @@ cat submit.log
 [ "$submit_status" = 1 ] || fail "farm submit --wait exited $submit_status, expected 1"
 grep -Eq 'broken\.gltf +- +failed .*broken\.gltf' submit.log ||
     fail "the summary does not name the broken scene"
-grep -q '7 images: 6 ok, 0 partial, 1 failed' submit.log || fail "the summary's counts"
-# 9 work items with MaxArraySize=5: two arrays.
-[ "$(grep -c '^array' job.farm/jobs.txt)" = 2 ] || fail "not cut into two arrays: $(cat job.farm/jobs.txt)"
+grep -q '8 images: 7 ok, 0 partial, 1 failed' submit.log || fail "the summary's counts"
+# 11 work items with MaxArraySize=5: three arrays.
+[ "$(grep -c '^array' job.farm/jobs.txt)" = 3 ] || fail "not cut into three arrays: $(cat job.farm/jobs.txt)"
 for f in cornell.exr cornell.png glossy_banded.exr glossy_banded.png anim_0001.exr \
-    anim_0002.exr anim_0003.exr soft_half.exr soft_half.png; do
+    anim_0002.exr anim_0003.exr soft_half.exr soft_half.png denoised_banded.exr \
+    denoised_banded.png; do
     if [ -f "farm/$f" ]; then same "ref/$f" "farm/$f"; else fail "farm/$f was not written"; fi
 done
 if ls farm | grep -q '\.band-'; then fail "band files left after the merge: $(ls farm)"; fi
