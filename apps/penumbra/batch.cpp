@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "apps/penumbra/denoise_step.h"
 #include "core/accel/accel.h"
 #include "core/error.h"
 #include "core/film/aov.h"
@@ -103,6 +104,13 @@ void validate(const RenderCommandOptions& o, const std::string& where) {
         const auto& kinds = exr_compressions();
         if (std::find(kinds.begin(), kinds.end(), o.compression) == kinds.end())
             throw std::invalid_argument("unknown EXR compression '" + o.compression + "'");
+        // Adaptive sampling gives every pixel at least two samples (its first pass is
+        // even), so only the budget can leave a half empty.
+        if (o.denoise && o.spp < kDenoiseMinSpp)
+            throw std::invalid_argument(
+                "denoise needs at least " + std::to_string(kDenoiseMinSpp) +
+                " samples per pixel, spp is " + std::to_string(o.spp) +
+                " (the denoiser compares two halves of each pixel's samples)");
         // Adaptive sampling stops a pixel by the error of its 3x3 neighbourhood, so a
         // band's edge rows would depend on rows another task renders.
         if (o.bands > 1 && o.target_error > 0)

@@ -1,7 +1,9 @@
 // `render --denoise` end to end: the EXR's RGB is the denoised image and the layer
 // Noisy.R/G/B the film's own estimate, bit for bit that of a render with the error AOV's
 // sample split; the header names the method and its estimate; the job-file key, frames,
-// AOVs and --reference work with it; and the file is the same for any thread count.
+// AOVs and --reference work with it; fewer than 2 samples per pixel are refused (or, when
+// a time limit stops the render there, left undenoised); and the file is the same for any
+// thread count.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
@@ -151,6 +153,43 @@ TEST(RenderDenoiseCli, ReferenceMeasuresTheDenoisedAndTheNoisyImage) {
     EXPECT_NE(r.output.find("denoised in"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("estimated relMSE"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("(noisy: MSE"), std::string::npos) << r.output;
+}
+
+// One sample per pixel leaves one half empty: the denoiser would have no variance and no
+// cross-validation, so the options are refused before anything renders.
+TEST(RenderDenoiseCli, FewerThanTwoSamplesPerPixelIsRefused) {
+    test::ScratchDir dir;
+    const std::string why = "denoise needs at least 2 samples per pixel, spp is 1";
+    const test::CliResult r = test::run_penumbra(
+        {"render", kCornell, "--spp", "1", "--width", "8", "--denoise", "-o", dir.file("x.exr")});
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find(why), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("x.exr")));
+    const std::string job = dir.write(
+        "job.json", R"({"jobs": [{"scene": ")" + kCornell + R"(", "spp": 1, "denoise": true}]})");
+    const test::CliResult j = test::run_penumbra({"render", "--job", job});
+    EXPECT_NE(j.status, 0);
+    EXPECT_NE(j.output.find("jobs[0]: " + why), std::string::npos) << j.output;
+    // Two are enough.
+    const test::CliResult two =
+        test::run_penumbra({"render", kCornell, "--spp", "2", "--width", "8", "--denoise", "-q",
+                            "--no-preview", "-o", dir.file("two.exr")});
+    EXPECT_EQ(two.status, 0) << two.output;
+    expect_denoised(dir.file("two.exr"));
+}
+
+// A time limit that runs out in the first pass (of one sample) leaves the raw image: it
+// is written as it is, without the denoiser's layer and header fields, and says why.
+TEST(RenderDenoiseCli, ARenderStoppedAtOneSampleIsNotDenoised) {
+    test::ScratchDir dir;
+    const test::CliResult r =
+        render({"--no-preview", "--denoise", "--time-limit", "0.000001", "-o", dir.file("t.exr")});
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("not denoised: 1 sample per pixel"), std::string::npos) << r.output;
+    const OIIO::ImageSpec spec = header(dir.file("t.exr"));
+    EXPECT_EQ(spec.get_string_attribute("penumbra:spp"), "1");
+    EXPECT_FALSE(spec.find_attribute("penumbra:denoise"));
+    EXPECT_LT(spec.channelindex("Noisy.R"), 0);
 }
 
 TEST(RenderDenoiseCli, SameCommandIsBitwiseIdenticalForAnyThreadCount) {
