@@ -15,6 +15,10 @@ namespace {
 
 constexpr int kMaxVariables = 16;  // the constant and up to 15 features
 
+// The weight of a pixel's own value beside the fits' predictions (see
+// collaborative_regression): e^-7, a patch distance of 7 noise variances.
+constexpr float kSelfWeight = 1e-3f;
+
 // A variable whose pivot falls below this fraction of its own weighted sum of squares is
 // (numerically) a combination of the others in this window, or constant: it is left out
 // of the fit rather than amplifying rounding.
@@ -249,11 +253,12 @@ std::vector<Planes> collaborative_regression(const Planes& color, const Planes& 
                             const std::vector<float>& pred = fits[ty * tiles_x + tx].predictions[b];
                             for (int c = 0; c < 4; ++c) sum[c] += pred[c * pn + pi];
                         }
-                    // The pixel's own value counts as its own fit's centre would, with
-                    // weight 1: where the colour is nearly noise-free the weights of every
-                    // other pixel vanish, and a pixel between the fits' centres would
-                    // otherwise be left to the vanishing tails of fits that do not see it.
-                    const float self = S > 1 ? 1.0f : 0.0f;
+                    // The pixel's own value counts too, with a weight far below what the
+                    // fits give it wherever they see it (a fit's centre gives itself 1):
+                    // where the colour is nearly noise-free the weights of every other
+                    // pixel vanish, and a pixel between the fits' centres would otherwise
+                    // be left to the vanishing tails of fits that do not see it.
+                    const float self = S > 1 ? kSelfWeight : 0.0f;
                     for (int c = 0; c < 3; ++c)
                         out[b].at(c, x, y) = (sum[c] + self * color.at(c, x, y)) / (sum[3] + self);
                 }

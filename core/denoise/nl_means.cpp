@@ -111,7 +111,8 @@ Planes nl_means(const Planes& image, const NlmGuide& guide, int radius) {
                 float* out_k[1] = {weights.data()};
                 patch_weights(guide, &guide.k, 1, x0, y0, x1, y1, dx, dy, out_k, scratch, 1);
                 // The weight is 0 where the offset pixel is outside; clamping only keeps
-                // the reads inside.
+                // the reads inside. Away from the border the offset row is contiguous.
+                const bool inside = x0 + dx >= 0 && x1 + dx <= w;
                 for (int x = 0; x < tw; ++x) column[x] = std::clamp(x0 + x + dx, 0, w - 1);
                 for (int y = y0; y < y1; ++y) {
                     const size_t yq = size_t(std::clamp(y + dy, 0, h - 1)) * w;
@@ -121,6 +122,11 @@ Planes nl_means(const Planes& image, const NlmGuide& guide, int radius) {
                     for (int c = 0; c < C; ++c) {
                         const float* in = image.plane(c) + yq;
                         float* acc = &sum[c * n + size_t(y - y0) * tw];
+                        if (inside) {
+                            const float* q = in + x0 + dx;
+                            for (int x = 0; x < tw; ++x) acc[x] += wt[x] * q[x];
+                            continue;
+                        }
                         for (int x = 0; x < tw; ++x) row[x] = in[column[x]];
                         for (int x = 0; x < tw; ++x) acc[x] += wt[x] * row[x];
                     }
