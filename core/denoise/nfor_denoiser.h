@@ -26,8 +26,11 @@ struct DenoiseResult {
     Image color;  // 3 channels, working space
     // Estimated relMSE of `color` (kRelMseEpsilon), from the halves' cross-validation.
     double relmse_estimate = 0;
-    // Pixel values (per half) that the firefly guard held back, of all.
+    // Pixel values (per half) that the firefly guard held back.
     size_t fireflies = 0;
+    // The share of the image's energy (the sum of R, G, B over all pixels) they held:
+    // the bias the guard adds to the image's mean.
+    double firefly_energy = 0;
 };
 
 // Deterministic: the same bits for any thread count.
