@@ -99,7 +99,8 @@ Beauty denoised_beauty(const DenoisedBeauty& denoised, const Image& alpha, float
 std::vector<std::pair<std::string, std::string>> denoise_attributes(
     const DenoisedBeauty& denoised) {
     return {{"penumbra:denoise", denoised.method},
-            {"penumbra:denoise_relmse_estimate", full_precision(denoised.relmse_estimate)}};
+            {"penumbra:denoise_relmse_estimate", full_precision(denoised.relmse_estimate)},
+            {"penumbra:denoise_firefly_energy", full_precision(denoised.firefly_energy)}};
 }
 
 AovLayers aov_layers(const Film& film, const ColorPipeline& color, float radiance_scale) {

@@ -22,6 +22,7 @@ struct DenoisedBeauty {
     const Image* color = nullptr;  // 3 channels, working space, the film's size
     std::string method;            // the method and its parameters: describe(params)
     double relmse_estimate = 0;    // the denoiser's estimate of color's relMSE
+    double firefly_energy = 0;     // the share of energy its firefly guard held back
 };
 
 struct RenderFiles {

@@ -21,7 +21,8 @@ std::unique_ptr<DenoiseStep> denoise(const DenoiseInput& input, int threads,
     tbb::task_arena arena(threads > 0 ? threads : tbb::this_task_arena::max_concurrency());
     arena.execute([&] { step->result = denoise_nfor(input, params); });
     step->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    step->beauty = {&step->result.color, describe(params), step->result.relmse_estimate};
+    step->beauty = {&step->result.color, describe(params), step->result.relmse_estimate,
+                    step->result.firefly_energy};
     return step;
 }
 

@@ -67,6 +67,10 @@ void expect_denoised(const std::string& path) {
     ASSERT_FALSE(estimate.empty()) << path;
     const double e = std::stod(estimate);
     EXPECT_TRUE(std::isfinite(e)) << estimate;
+    const std::string energy = spec.get_string_attribute("penumbra:denoise_firefly_energy");
+    ASSERT_FALSE(energy.empty()) << path;
+    EXPECT_GE(std::stod(energy), 0) << energy;
+    EXPECT_LT(std::stod(energy), 1) << energy;
 }
 
 TEST(RenderDenoiseCli, WritesTheDenoisedImageTheNoisyLayerAndTheEstimate) {
