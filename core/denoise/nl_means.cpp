@@ -58,10 +58,12 @@ void patch_weights(const NlmGuide& g, const float* ks, int nk, int x0, int y0, i
                     den[ex] = va[xa] + vb[xb];
                 }
             }
+            // One division for every bandwidth: num / (k^2 (epsilon + den)).
+            for (int ex = 0; ex < ew; ++ex) num[ex] /= kEpsilon + den[ex];
             for (int k = 0; k < nk; ++k) {
-                const float k2 = ks[k] * ks[k];
+                const float inv_k2 = 1.0f / (ks[k] * ks[k]);
                 float* d = &s.distance[k * area + size_t(ey) * ew];
-                for (int ex = 0; ex < ew; ++ex) d[ex] += num[ex] / (kEpsilon + k2 * den[ex]);
+                for (int ex = 0; ex < ew; ++ex) d[ex] += num[ex] * inv_k2;
             }
         }
     }
