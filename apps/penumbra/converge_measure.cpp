@@ -111,9 +111,12 @@ std::vector<ConvergeSeries> measure_config(const ConvergeOptions& o, const Conve
         p.mean_spp = double(stats.camera_samples) / (double(img.width) * img.height);
         p.target_error = run.target_error;
         series[0].points.push_back(p);
-        if (c.options.denoise) series[1].points.push_back(denoised_point(o, c, film, ref, p));
+        // Below 2 spp one half of each pixel's samples is empty: nothing to denoise with,
+        // so the denoised series starts at 2.
+        const bool denoise = c.options.denoise && stats.spp >= 2;
+        if (denoise) series[1].points.push_back(denoised_point(o, c, film, ref, p));
         if (!c.options.quiet)
-            print_point(o, c.name, p, c.options.denoise ? &series[1].points.back() : nullptr);
+            print_point(o, c.name, p, denoise ? &series[1].points.back() : nullptr);
     }
     return series;
 }

@@ -1,0 +1,123 @@
+// The denoiser on bundled scenes against references: at 32 spp the denoised image beats
+// the raw one by the margin each scene states, the header's estimate of its relMSE lies
+// within a factor of 2 of the measured one, and the firefly guard takes at most 0.1% of
+// the energy of a converging render.
+//
+// The reference is the mean of two renders at 1024 spp with other seeds; its own relMSE
+// (a quarter of the two's relMSE against each other: each has twice the variance of their
+// mean, and their difference twice that) is subtracted from every measured value. Every
+// render is deterministic, so these figures are the same on every machine.
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/convergence.h"
+#include "support/cli_process.h"
+#include "support/exr_pixels.h"
+#include "support/paths.h"
+
+namespace penumbra {
+namespace {
+
+using Args = std::vector<std::string>;
+constexpr int kWidth = 128;
+
+std::string out_path(const std::string& name) {
+    return test::binary_path("denoise_quality_" + name + ".exr");
+}
+
+// Renders the bundled scene to `name`, returning its pixels.
+test::Pixels render(const std::string& scene, const std::string& name, const Args& more) {
+    Args args = {"render",      test::source_path("scenes/" + scene + ".gltf"),
+                 "--width",     std::to_string(kWidth),
+                 "-o",          out_path(name),
+                 "--overwrite", "--no-preview",
+                 "-q"};
+    args.insert(args.end(), more.begin(), more.end());
+    const test::CliResult r = test::run_penumbra(args);
+    EXPECT_EQ(r.status, 0) << r.output;
+    return test::read_pixels(out_path(name));
+}
+
+// The three channels `prefix`R, G, B of an EXR as an image.
+Image layer(const test::Pixels& p, const std::string& prefix) {
+    Image img(p.width, p.height, 3);
+    const size_t nc = p.channels.size();
+    for (int c = 0; c < 3; ++c) {
+        const std::string name = prefix + "RGB"[c];
+        size_t k = 0;
+        while (k < nc && p.channels[k] != name) ++k;
+        EXPECT_LT(k, nc) << name;
+        if (k == nc) return img;
+        for (size_t i = 0; i < size_t(p.width) * p.height; ++i)
+            img.pixels[i * 3 + c] = p.data[i * nc + k];
+    }
+    return img;
+}
+
+// A numeric header attribute penumbra writes as a string; NaN when absent.
+double header_value(const std::string& path, const std::string& key) {
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+    EXPECT_TRUE(in) << path << ": " << OIIO::geterror();
+    const std::string v = in ? in->spec().get_string_attribute(key) : "";
+    EXPECT_FALSE(v.empty()) << path << ": no " << key;
+    return v.empty() ? std::nan("") : std::stod(v);
+}
+
+struct Case {
+    const char* scene;
+    // The largest denoised / raw relMSE ratio accepted at 32 spp (measured: the comment).
+    double max_ratio;
+    // Whether the estimate is checked: the Cornell box's caustics through the mirror
+    // sphere leave its 2048-spp reference too noisy to measure the denoised error by
+    // (docs/validation.md measures it against 8192 spp).
+    bool estimate;
+};
+
+TEST(DenoiseQualityLong, BeatsRawAndEstimatesItsErrorOnBundledScenes) {
+    const Case cases[] = {
+        {"cornell-box", 0.15, false},  // measured 0.045
+        {"glossy", 0.5, true},         // 0.31, estimate 0.88 of the measured error
+        {"dof", 0.3, true},            // 0.14, estimate 0.76
+        {"soft-shadows", 0.6, true},   // 0.41, estimate 0.90
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.scene);
+        const std::string name = c.scene;
+        const Image r1 = layer(render(name, name + "_ref1", {"--spp", "1024", "--seed", "11"}), "");
+        const Image r2 = layer(render(name, name + "_ref2", {"--spp", "1024", "--seed", "12"}), "");
+        Image ref = r1;
+        for (size_t i = 0; i < ref.pixels.size(); ++i)
+            ref.pixels[i] = 0.5f * (r1.pixels[i] + r2.pixels[i]);
+        const double ref_noise = relative_mse(r1, r2) / 4;
+        const test::Pixels x = render(name, name + "_32", {"--spp", "32", "--denoise"});
+        const double denoised = relative_mse(layer(x, ""), ref) - ref_noise;
+        const double raw = relative_mse(layer(x, "Noisy."), ref) - ref_noise;
+        EXPECT_LT(denoised, c.max_ratio * raw) << "denoised " << denoised << ", raw " << raw;
+        const double estimate =
+            header_value(out_path(name + "_32"), "penumbra:denoise_relmse_estimate");
+        if (c.estimate) {
+            EXPECT_GT(estimate, denoised / 2) << "measured " << denoised;
+            EXPECT_LT(estimate, denoised * 2) << "measured " << denoised;
+        }
+    }
+}
+
+// At 1024 spp the caustics are no longer lone samples: the guard holds back at most 0.1%
+// of the image's energy, the bias it adds to the converged mean (measured: nothing on
+// any of the four).
+TEST(DenoiseQualityLong, FireflyGuardHoldsBackAtMostAThousandthOfAConvergingImage) {
+    for (const char* scene : {"cornell-box", "glossy", "dof", "soft-shadows"}) {
+        render(scene, std::string(scene) + "_1024dn", {"--spp", "1024", "--denoise"});
+        const double energy = header_value(out_path(std::string(scene) + "_1024dn"),
+                                           "penumbra:denoise_firefly_energy");
+        EXPECT_LE(energy, 1e-3) << scene;
+    }
+}
+
+}  // namespace
+}  // namespace penumbra
