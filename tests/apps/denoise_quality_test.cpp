@@ -1,7 +1,7 @@
-// The denoiser on bundled scenes against references: at 32 spp the denoised image beats
-// the raw one by the margin each scene states, the header's estimate of its relMSE lies
-// within a factor of 2 of the measured one, and the firefly guard takes at most 0.1% of
-// the energy of a converging render.
+// The denoiser on bundled scenes against references: a converging render changes by less
+// than its noise and loses at most 0.1% of its energy to the firefly guard; at 32 spp the
+// denoised image beats the raw one by the margin each scene states, and the header's
+// estimate of its relMSE lies within a factor of 2 of the measured one.
 //
 // The reference is the mean of two renders at 1024 spp with other seeds; its own relMSE
 // (a quarter of the two's relMSE against each other: each has twice the variance of their
@@ -78,7 +78,7 @@ struct Case {
     bool estimate;
 };
 
-TEST(DenoiseQualityLong, BeatsRawAndEstimatesItsErrorOnBundledScenes) {
+TEST(DenoiseQualityLong, OnBundledScenes) {
     const Case cases[] = {
         {"cornell-box", 0.15, false},  // measured 0.045
         {"glossy", 0.5, true},         // 0.31, estimate 0.88 of the measured error
@@ -88,34 +88,37 @@ TEST(DenoiseQualityLong, BeatsRawAndEstimatesItsErrorOnBundledScenes) {
     for (const Case& c : cases) {
         SCOPED_TRACE(c.scene);
         const std::string name = c.scene;
-        const Image r1 = layer(render(name, name + "_ref1", {"--spp", "1024", "--seed", "11"}), "");
-        const Image r2 = layer(render(name, name + "_ref2", {"--spp", "1024", "--seed", "12"}), "");
+        // Two converging renders, denoised: their raw images make the reference.
+        const Args converging = {"--spp", "1024", "--denoise"};
+        Args args1 = converging, args2 = converging;
+        args1.insert(args1.end(), {"--seed", "11"});
+        args2.insert(args2.end(), {"--seed", "12"});
+        const test::Pixels p1 = render(name, name + "_ref1", args1);
+        const test::Pixels p2 = render(name, name + "_ref2", args2);
+        const Image r1 = layer(p1, "Noisy."), r2 = layer(p2, "Noisy.");
         Image ref = r1;
         for (size_t i = 0; i < ref.pixels.size(); ++i)
             ref.pixels[i] = 0.5f * (r1.pixels[i] + r2.pixels[i]);
-        const double ref_noise = relative_mse(r1, r2) / 4;
+        const double render_noise = relative_mse(r1, r2) / 2, ref_noise = render_noise / 2;
+
+        // No harm where there is nothing to gain: denoising a converging render changes it
+        // by less than its own noise, and the firefly guard holds back at most 0.1% of its
+        // energy (the bias it adds to the converged mean; measured: nothing on any of the
+        // four, whose caustics are no longer lone samples at 1024 spp).
+        EXPECT_LT(relative_mse(layer(p1, ""), r1), render_noise);
+        EXPECT_LE(header_value(out_path(name + "_ref1"), "penumbra:denoise_firefly_energy"), 1e-3);
+
+        // At 32 spp: better than raw by the stated margin, and an honest estimate.
         const test::Pixels x = render(name, name + "_32", {"--spp", "32", "--denoise"});
         const double denoised = relative_mse(layer(x, ""), ref) - ref_noise;
         const double raw = relative_mse(layer(x, "Noisy."), ref) - ref_noise;
         EXPECT_LT(denoised, c.max_ratio * raw) << "denoised " << denoised << ", raw " << raw;
-        const double estimate =
-            header_value(out_path(name + "_32"), "penumbra:denoise_relmse_estimate");
         if (c.estimate) {
+            const double estimate =
+                header_value(out_path(name + "_32"), "penumbra:denoise_relmse_estimate");
             EXPECT_GT(estimate, denoised / 2) << "measured " << denoised;
             EXPECT_LT(estimate, denoised * 2) << "measured " << denoised;
         }
-    }
-}
-
-// At 1024 spp the caustics are no longer lone samples: the guard holds back at most 0.1%
-// of the image's energy, the bias it adds to the converged mean (measured: nothing on
-// any of the four).
-TEST(DenoiseQualityLong, FireflyGuardHoldsBackAtMostAThousandthOfAConvergingImage) {
-    for (const char* scene : {"cornell-box", "glossy", "dof", "soft-shadows"}) {
-        render(scene, std::string(scene) + "_1024dn", {"--spp", "1024", "--denoise"});
-        const double energy = header_value(out_path(std::string(scene) + "_1024dn"),
-                                           "penumbra:denoise_firefly_energy");
-        EXPECT_LE(energy, 1e-3) << scene;
     }
 }
 
