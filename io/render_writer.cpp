@@ -100,6 +100,8 @@ std::vector<std::pair<std::string, std::string>> denoise_attributes(
     const DenoisedBeauty& denoised) {
     return {{"penumbra:denoise", denoised.method},
             {"penumbra:denoise_relmse_estimate", full_precision(denoised.relmse_estimate)},
+            {"penumbra:denoise_relmse_estimate_stderr",
+             full_precision(denoised.relmse_estimate_stderr)},
             {"penumbra:denoise_firefly_energy", full_precision(denoised.firefly_energy)}};
 }
 

@@ -19,10 +19,11 @@ namespace penumbra {
 // A denoised beauty (core/denoise/nfor_denoiser.h's result) to write in place of the
 // film's own estimate.
 struct DenoisedBeauty {
-    const Image* color = nullptr;  // 3 channels, working space, the film's size
-    std::string method;            // the method and its parameters: describe(params)
-    double relmse_estimate = 0;    // the denoiser's estimate of color's relMSE
-    double firefly_energy = 0;     // the share of energy its firefly guard held back
+    const Image* color = nullptr;       // 3 channels, working space, the film's size
+    std::string method;                 // the method and its parameters: describe(params)
+    double relmse_estimate = 0;         // the denoiser's estimate of color's relMSE
+    double relmse_estimate_stderr = 0;  // that estimate's standard error
+    double firefly_energy = 0;          // the share of energy its firefly guard held back
 };
 
 struct RenderFiles {

@@ -22,7 +22,7 @@ std::unique_ptr<DenoiseStep> denoise(const DenoiseInput& input, int threads,
     arena.execute([&] { step->result = denoise_nfor(input, params); });
     step->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     step->beauty = {&step->result.color, describe(params), step->result.relmse_estimate,
-                    step->result.firefly_energy};
+                    step->result.relmse_estimate_stderr, step->result.firefly_energy};
     return step;
 }
 

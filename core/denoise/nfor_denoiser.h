@@ -19,7 +19,7 @@ struct NforParams {
     // and left a higher error on the bundled scenes (cornell-box at 64 spp: 4.3e-3 against
     // 3.4e-3; the others within 10%).
     int patch_radius = 2;
-    float k_small = 0.5f;   // the two bandwidths the halves choose between
+    float k_small = 0.5f;  // the two bandwidths the halves choose between
     float k_large = 1.0f;
     // Guide prefiltering: window and patch. NFOR's 11 x 11 and 7 x 7 took a third of the
     // time and were no better on the bundled scenes (relMSE within 3%, mostly lower).
@@ -30,8 +30,11 @@ struct NforParams {
 
 struct DenoiseResult {
     Image color;  // 3 channels, working space
-    // Estimated relMSE of `color` (kRelMseEpsilon), from the halves' cross-validation.
+    // Estimated relMSE of `color` (kRelMseEpsilon), from the halves' cross-validation, and
+    // that estimate's standard error; where the estimate is below its standard error, the
+    // standard error (nfor_denoiser.cpp).
     double relmse_estimate = 0;
+    double relmse_estimate_stderr = 0;
     // Pixel values (per half) that the firefly guard held back.
     size_t fireflies = 0;
     // The share of the image's energy (the sum of R, G, B over all pixels) they held:

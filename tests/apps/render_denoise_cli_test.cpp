@@ -67,6 +67,11 @@ void expect_denoised(const std::string& path) {
     ASSERT_FALSE(estimate.empty()) << path;
     const double e = std::stod(estimate);
     EXPECT_TRUE(std::isfinite(e)) << estimate;
+    const std::string stderr_attr =
+        spec.get_string_attribute("penumbra:denoise_relmse_estimate_stderr");
+    ASSERT_FALSE(stderr_attr.empty()) << path;
+    // Reported below its own standard error, the estimate is that error.
+    EXPECT_GE(e, std::stod(stderr_attr)) << estimate << " " << stderr_attr;
     const std::string energy = spec.get_string_attribute("penumbra:denoise_firefly_energy");
     ASSERT_FALSE(energy.empty()) << path;
     EXPECT_GE(std::stod(energy), 0) << energy;
