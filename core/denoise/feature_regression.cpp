@@ -84,6 +84,59 @@ struct TileFit {
     std::vector<std::vector<float>> predictions;  // per bandwidth, 4 planes of (w + 2R) x (h + 2R)
 };
 
+// The solution of each centre's fit from its normal equations (ata: D(D+1)/2 planes of
+// n, atb: 3D planes): the constant term per channel, then the features' coefficients,
+// as 3D planes of n.
+std::vector<float> solve_fits(const std::vector<float>& ata, const std::vector<float>& atb, int D,
+                              size_t n) {
+    const int M = D * (D + 1) / 2;
+    std::vector<float> beta(size_t(D) * 3 * n);
+    for (size_t i = 0; i < n; ++i) {
+        double a[kMaxVariables * (kMaxVariables + 1) / 2], rhs[kMaxVariables * 3],
+            sol[kMaxVariables * 3];
+        for (int m = 0; m < M; ++m) a[m] = ata[size_t(m) * n + i];
+        for (int m = 0; m < D * 3; ++m) rhs[m] = atb[size_t(m) * n + i];
+        solve(D, a, rhs, sol);
+        for (int m = 0; m < D * 3; ++m) beta[size_t(m) * n + i] = float(sol[m]);
+    }
+    return beta;
+}
+
+// Every fit of the tile (cw x ch centres, their features in `centre`) predicts its window,
+// weighted as in the fit: the constant term plus the coefficients times the features'
+// difference from the centre, summed into pred (colour and weight planes over the tile
+// grown by R).
+void add_predictions(const Planes& features, const RegressionParams& p, const Tile& t, int cw,
+                     int ch, const std::vector<float>& centre, const std::vector<float>& weights,
+                     const std::vector<float>& beta, std::vector<float>& pred) {
+    const int w = features.width, h = features.height, R = p.window_radius;
+    const int S = p.center_stride, Fc = features.channels, pw = t.width() + 2 * R;
+    const size_t n = size_t(cw) * ch, pn = size_t(pw) * (t.height() + 2 * R);
+    for (int dy = -R, o = 0; dy <= R; ++dy)
+        for (int dx = -R; dx <= R; ++dx, ++o) {
+            const float* wt = &weights[size_t(o) * n];
+            for (int j = 0; j < ch; ++j) {
+                const int yq = t.y0 + j * S + dy;
+                if (yq < 0 || yq >= h) continue;
+                for (int i = 0; i < cw; ++i) {
+                    const int xq = t.x0 + i * S + dx;
+                    const size_t ci = size_t(j) * cw + i;
+                    const float wgt = wt[ci];
+                    if (xq < 0 || xq >= w || wgt == 0) continue;
+                    const size_t pi = size_t(yq - t.y0 + R) * pw + (xq - t.x0 + R);
+                    float r[3] = {beta[0 * n + ci], beta[1 * n + ci], beta[2 * n + ci]};
+                    for (int k = 0; k < Fc; ++k) {
+                        const float df = features.at(k, xq, yq) - centre[size_t(k) * n + ci];
+                        for (int c = 0; c < 3; ++c)
+                            r[c] += beta[size_t((k + 1) * 3 + c) * n + ci] * df;
+                    }
+                    for (int c = 0; c < 3; ++c) pred[c * pn + pi] += wgt * r[c];
+                    pred[3 * pn + pi] += wgt;
+                }
+            }
+        }
+}
+
 TileFit fit_tile(const Planes& color, const Planes& variance, const Planes& features,
                  const RegressionParams& p, const std::vector<float>& ks, const Tile& t) {
     const int w = color.width, h = color.height, R = p.window_radius, S = p.center_stride;
@@ -152,46 +205,11 @@ TileFit fit_tile(const Planes& color, const Planes& variance, const Planes& feat
             }
         }
     TileFit fit;
-    const int pw = t.width() + 2 * R, ph = t.height() + 2 * R;
-    const size_t pn = size_t(pw) * ph;
-    std::vector<float> beta(size_t(D) * 3 * n);
+    const size_t pn = size_t(t.width() + 2 * R) * (t.height() + 2 * R);
     for (int b = 0; b < K; ++b) {
-        // Solve each centre's fit; beta holds the constant term per channel, then the
-        // features' coefficients.
-        for (size_t i = 0; i < n; ++i) {
-            double a[kMaxVariables * (kMaxVariables + 1) / 2], rhs[kMaxVariables * 3],
-                sol[kMaxVariables * 3];
-            for (int m = 0; m < M; ++m) a[m] = ata[b][size_t(m) * n + i];
-            for (int m = 0; m < D * 3; ++m) rhs[m] = atb[b][size_t(m) * n + i];
-            solve(D, a, rhs, sol);
-            for (int m = 0; m < D * 3; ++m) beta[size_t(m) * n + i] = float(sol[m]);
-        }
-        // Every fit predicts its window, weighted as in the fit: the constant term plus
-        // the coefficients times the features' difference from the centre.
+        const std::vector<float> beta = solve_fits(ata[b], atb[b], D, n);
         std::vector<float>& pred = fit.predictions.emplace_back(4 * pn, 0.0f);
-        for (int dy = -R, o = 0; dy <= R; ++dy)
-            for (int dx = -R; dx <= R; ++dx, ++o) {
-                const float* wt = &weights[b][size_t(o) * n];
-                for (int j = 0; j < ch; ++j) {
-                    const int yq = t.y0 + j * S + dy;
-                    if (yq < 0 || yq >= h) continue;
-                    for (int i = 0; i < cw; ++i) {
-                        const int xq = t.x0 + i * S + dx;
-                        const size_t ci = size_t(j) * cw + i;
-                        const float wgt = wt[ci];
-                        if (xq < 0 || xq >= w || wgt == 0) continue;
-                        const size_t pi = size_t(yq - t.y0 + R) * pw + (xq - t.x0 + R);
-                        float r[3] = {beta[0 * n + ci], beta[1 * n + ci], beta[2 * n + ci]};
-                        for (int k = 0; k < Fc; ++k) {
-                            const float df = features.at(k, xq, yq) - centre[size_t(k) * n + ci];
-                            for (int c = 0; c < 3; ++c)
-                                r[c] += beta[size_t((k + 1) * 3 + c) * n + ci] * df;
-                        }
-                        for (int c = 0; c < 3; ++c) pred[c * pn + pi] += wgt * r[c];
-                        pred[3 * pn + pi] += wgt;
-                    }
-                }
-            }
+        add_predictions(features, p, t, cw, ch, centre, weights[b], beta, pred);
     }
     return fit;
 }
