@@ -4,7 +4,7 @@
 # symbols are a library's references to itself, found only when the search reaches it,
 # deep in that order. Naming those libraries in the executable's own DT_NEEDED (they are
 # loaded anyway) puts them at the front: about 0.1 s less per process, each render, each
-# Slurm task and each of ctest's test processes (docs/performance.md, twentieth session).
+# Slurm task and each of ctest's test processes (docs/performance.md, "Start-up").
 # scripts/loader_order.py checks that no symbol moves to or from a strong definition
 # (ctest LoaderOrder).
 

@@ -142,7 +142,7 @@ inline LightDraws draw_light(PathSampler& sampler) {
 // the rays leaving it, which the vertex's continuation shares (RayOrigins). Inline into
 // the path tracer's loop, its one caller: the call's set-up and its eleven arguments
 // cost about 25 instructions a vertex, 1% of the render's (docs/performance.md,
-// sixteenth session).
+// "Shapes of the hot path").
 [[gnu::always_inline]] inline Spectrum sample_one_light(
     const RenderContext& ctx, const RayOrigins& origins, const ShadingData& sd, Vec3 wo, float time,
     const PathSampler& sampler, const LightDraws& u, LightStrategy strategy,

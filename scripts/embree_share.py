@@ -8,7 +8,7 @@ process (start-up included: the dynamic loader and the kernel take about 5%).
 
 The share moves by about two points from run to run and from day to day on this VM, and
 it barely follows penumbra's own instruction count: when ours fell 7%, Embree's samples
-fell 7% with them (docs/performance.md, twenty-fourth session). Compare binaries in one
+fell 7% with them (docs/performance.md, "Embree's share"). Compare binaries in one
 invocation, and quote medians of several rounds.
 
   python3 scripts/embree_share.py /tmp/old/penumbra build/bin/penumbra --rounds 8

@@ -162,8 +162,8 @@ def cycles_path_tracing_seconds(log):
 def interleave(penumbra_todo, cycles_todo):
     """The order of efficiency.py --interleave: each (spp, seed) that both renderers render,
     by one and then at once by the other, the first of the two alternating, so that both
-    see the same minutes of a machine whose speed drifts (docs/performance.md, ninth
-    session) and neither always goes first; the renders only one of them needs are in
+    see the same minutes of a machine whose speed drifts (docs/performance.md,
+    "How to measure") and neither always goes first; the renders only one of them needs are in
     their place. Returns [(renderer, (spp, seed))]."""
     steps, both = [], 0
     keys = list(penumbra_todo) + [k for k in cycles_todo if k not in penumbra_todo]
