@@ -7,7 +7,9 @@
 // one bent back towards the plane's normal (materials/normal_map.h), so its lean phi is
 // at most kTilt, and the plane may not come out darker than the least A over [0, kTilt]
 // from any view. Views from the side the map leans away from put wo below the mapped
-// normal: where every BSDF is 0, those were black.
+// normal: where every BSDF is 0, those were black. A white mirror with the same map
+// reflects exactly 1 from every view: its mirror direction stays above the plane, where
+// the sky is, and the shadowing term is the diffuse lobes' alone.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,13 +29,14 @@ constexpr float kTilt = 40 * kPi / 180;
 constexpr int kRes = 8;
 
 // The plane y = 0, its UVs' u along +x; with a normal map, every normal leans by kTilt
-// towards +x.
-Scene furnace_plane(bool mapped) {
+// towards +x. White Lambertian, or a white mirror (metal of roughness 0).
+Scene furnace_plane(bool mapped, bool mirror = false) {
     Scene scene;
     MaterialDesc m;
     m.base_color = {1, 1, 1, 1};
-    m.metallic = 0;
-    m.specular = 0;  // exactly Lambertian (KHR_materials_specular factor 0)
+    m.metallic = mirror ? 1 : 0;
+    m.roughness = mirror ? 0 : 1;
+    m.specular = mirror ? 1 : 0;  // else exactly Lambertian (KHR_materials_specular 0)
     if (mapped) {
         const Vec3 local(std::sin(kTilt), 0, std::cos(kTilt));
         Image img(1, 1, 4);
@@ -119,6 +122,17 @@ TEST(NormalMapFurnace, MappedPlaneLosesNoMoreThanShadowingFromAnyView) {
             const double tol = 4 * m.se + 2e-3;
             EXPECT_GE(m.mean, bound - tol) << "azimuth " << az << ", elevation " << deg;
             EXPECT_LE(m.mean, 1 + tol) << "azimuth " << az << ", elevation " << deg;
+        }
+}
+
+TEST(NormalMapFurnace, MappedMirrorReflectsTheWholeEnvironmentFromAnyView) {
+    const Scene mirror = furnace_plane(true, true);
+    for (const float az : {0.0f, 90.0f, 180.0f})
+        for (const float deg : {5.0f, 15.0f, 30.0f, 60.0f, 85.0f}) {
+            const float e = deg * kPi / 180, a = az * kPi / 180;
+            const Vec3 wo(std::cos(a) * std::cos(e), std::sin(e), std::sin(a) * std::cos(e));
+            const Measured m = furnace_radiance(mirror, wo);
+            EXPECT_NEAR(m.mean, 1, 4 * m.se + 1e-3) << "azimuth " << az << ", elevation " << deg;
         }
 }
 
