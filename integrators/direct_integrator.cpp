@@ -96,8 +96,8 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
                 clear *= 1 - coverage;
                 r.tmin = std::nextafter(h->t, std::numeric_limits<float>::infinity());
             }
-            const Spectrum weight =
-                bump_shadowed(sd, bsdf, wo, bs->wi, wi_world, bs->f) * (std::abs(bs->wi.z) / bs->pdf);
+            const Spectrum weight = bump_shadowed(sd, bsdf, wo, bs->wi, wi_world, bs->f) *
+                                    (std::abs(bs->wi.z) / bs->pdf);
             L += shaded * weight * found * (1 / nb);
         }
         if (cover.through) {

@@ -59,8 +59,7 @@ inline Spectrum bump_shadowed(const ShadingData& sd, const Bsdf& bsdf, Vec3 wo, 
     if (!sd.bumped) return f;
     const float g = bump_shadowing(sd.n_side, sd.frame.n, wi_world);
     if (!(g < 1)) return f;
-    const Spectrum fd =
-        bsdf.is_lambertian() ? f : bsdf.eval_diffuse(wo, wi, Transport::Radiance);
+    const Spectrum fd = bsdf.is_lambertian() ? f : bsdf.eval_diffuse(wo, wi, Transport::Radiance);
     return max(f - fd * (1 - g), Spectrum(0));
 }
 
@@ -117,10 +116,10 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
     // pass over the shared terms), so only after the shadow ray is it read.
     const bool weighted = !ls->delta && strategy == LightStrategy::Mis;
     float bsdf_pdf = 0;
-    const Spectrum f = bump_shadowed(
-        sd, bsdf, wo, wi, ls->wi,
-        weighted ? bsdf_eval_pdf(bsdf, wo, wi, Transport::Radiance, &bsdf_pdf)
-                 : bsdf_eval(bsdf, wo, wi, Transport::Radiance));
+    const Spectrum f =
+        bump_shadowed(sd, bsdf, wo, wi, ls->wi,
+                      weighted ? bsdf_eval_pdf(bsdf, wo, wi, Transport::Radiance, &bsdf_pdf)
+                               : bsdf_eval(bsdf, wo, wi, Transport::Radiance));
     if (is_black(f)) return Spectrum(0);
     const Ray shadow = spawn_ray_to(origins, ls->wi, ls->dist, ls->p, time);
     const float transparency = shadow_transmittance(ctx, shadow);

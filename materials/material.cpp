@@ -270,8 +270,8 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
         // normal, not the base's normal map (the clearcoat spec's clearcoatNormalTexture).
         // Bent as the base's normal is (valid_reflection_normal), so that the coat's
         // mirror direction stays above the surface too.
-        Vec3 nc = mapped_normal(scene, m.clearcoat_normal_texture, m.clearcoat_normal_scale, sp) *
-                  side;
+        Vec3 nc =
+            mapped_normal(scene, m.clearcoat_normal_texture, m.clearcoat_normal_scale, sp) * side;
         if (m.clearcoat_normal_texture.valid()) nc = valid_reflection_normal(sd.n_side, wo, nc);
         nc = sd.frame.to_local(nc);
         if (!(nc.z > 1e-4f)) nc = Vec3(0, 0, 1);  // behind the base normal: no separate frame
