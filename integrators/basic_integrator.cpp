@@ -41,7 +41,8 @@ Spectrum BasicIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
             const std::optional<LightSample> ls = light->sample_Li(ref, sampler.get_2d(), ray.time);
             if (!ls || dot(ls->wi, sd.n_side) <= 0) continue;
             const Vec3 wi = sd.frame.to_local(ls->wi);
-            const Spectrum f = bsdf->eval(wo, wi, Transport::Radiance) * bump_shadowing(sd, ls->wi);
+            const Spectrum f =
+                bump_shadowed(sd, *bsdf, wo, wi, ls->wi, bsdf->eval(wo, wi, Transport::Radiance));
             if (is_black(f)) continue;
             const float transparency = shadow_transmittance(
                 ctx, spawn_ray_to(RayOrigins(sp), ls->wi, ls->dist, ls->p, ray.time));

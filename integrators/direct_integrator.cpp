@@ -96,7 +96,9 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
                 clear *= 1 - coverage;
                 r.tmin = std::nextafter(h->t, std::numeric_limits<float>::infinity());
             }
-            L += shaded * bs->weight() * found * (1 / nb * bump_shadowing(sd, wi_world));
+            const Spectrum weight = bump_shadowed(sd, bsdf, wo, bs->wi, wi_world, bs->f) *
+                                    (std::abs(bs->wi.z) / bs->pdf);
+            L += shaded * weight * found * (1 / nb);
         }
         if (cover.through) {
             step_through(sp, sd, ray);

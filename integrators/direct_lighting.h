@@ -23,12 +23,13 @@ inline float power_heuristic(float nf, float f_pdf, float ng, float g_pdf) {
     return denom > 0 ? (f * f) / denom : 0.0f;
 }
 
-// The bump terminator fix (Conty Estevez et al. 2019, "A Microfacet-Based Shadowing
-// Function to Solve the Bump Terminator Problem", Ray Tracing Gems ch. 12): light at wi
-// on a normal-mapped surface is scaled by G = min(1, <n_s, wi> / (<n_b, wi> <n_s, n_b>)),
-// smoothed to -G^3 + G^2 + G, with n_s the unperturbed (interpolated) normal and n_b the
-// mapped one, both on the viewer's side. Without a normal map n_b = n_s and this is
-// exactly 1. Transmitted light (wi below n_b) is left alone.
+// The bump terminator fix (Chiang, Li, Burley 2019, "Taming the Shadow Terminator", as
+// Cycles' bump_shadowing_term): diffuse light at wi on a normal-mapped surface is scaled
+// by G = min(1, <n_s, wi> / (<n_b, wi> <n_s, n_b>)), smoothed to -G^3 + G^2 + G, with n_s
+// the unperturbed (interpolated) normal and n_b the mapped one, both on the viewer's
+// side. Without a normal map n_b = n_s and this is exactly 1. Transmitted light (wi below
+// n_b) is left alone. (Conty Estevez et al. 2019, Ray Tracing Gems ch. 12, derive a
+// GGX-style G1 for the same purpose instead.)
 inline float bump_shadowing(Vec3 n_smooth, Vec3 n_bump, Vec3 wi) {
     // What the formula gives then (a division and three dot products at every light
     // and BSDF sample of a surface without a normal map).
@@ -45,6 +46,21 @@ inline float bump_shadowing(Vec3 n_smooth, Vec3 n_bump, Vec3 wi) {
 // as the formula gives it, without its comparison of the normals at each sample.
 inline float bump_shadowing(const ShadingData& sd, Vec3 wi) {
     return sd.bumped ? bump_shadowing(sd.n_side, sd.frame.n, wi) : 1.0f;
+}
+
+// f = bsdf.eval(wo, wi) (local; wi_world the same direction in world space) with
+// bump_shadowing on its diffuse lobes only (Bsdf::eval_diffuse), as Cycles applies it to
+// diffuse closures only. The term fades diffuse light smoothly at a normal-mapped
+// terminator; on a glossy or mirror lobe it took most of every reflection a steep bump
+// turns towards the horizon (under a white sky, a black ring around each bump of a
+// mirror-smooth normal map), light that the neighbouring bumps pass on, not block.
+inline Spectrum bump_shadowed(const ShadingData& sd, const Bsdf& bsdf, Vec3 wo, Vec3 wi,
+                              Vec3 wi_world, Spectrum f) {
+    if (!sd.bumped) return f;
+    const float g = bump_shadowing(sd.n_side, sd.frame.n, wi_world);
+    if (!(g < 1)) return f;
+    const Spectrum fd = bsdf.is_lambertian() ? f : bsdf.eval_diffuse(wo, wi, Transport::Radiance);
+    return max(f - fd * (1 - g), Spectrum(0));
 }
 
 // Partial coverage (glTF alpha MASK/BLEND) at a path's hit. The surface's share of the
@@ -100,9 +116,10 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
     // pass over the shared terms), so only after the shadow ray is it read.
     const bool weighted = !ls->delta && strategy == LightStrategy::Mis;
     float bsdf_pdf = 0;
-    const Spectrum f = (weighted ? bsdf_eval_pdf(bsdf, wo, wi, Transport::Radiance, &bsdf_pdf)
-                                 : bsdf_eval(bsdf, wo, wi, Transport::Radiance)) *
-                       bump_shadowing(sd, ls->wi);
+    const Spectrum f =
+        bump_shadowed(sd, bsdf, wo, wi, ls->wi,
+                      weighted ? bsdf_eval_pdf(bsdf, wo, wi, Transport::Radiance, &bsdf_pdf)
+                               : bsdf_eval(bsdf, wo, wi, Transport::Radiance));
     if (is_black(f)) return Spectrum(0);
     const Ray shadow = spawn_ray_to(origins, ls->wi, ls->dist, ls->p, time);
     const float transparency = shadow_transmittance(ctx, shadow);

@@ -194,8 +194,12 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         // cross the surface (or leak): end the path there. The same test as the light
         // samples', so that MIS weighs two strategies that cover the same directions.
         if ((bs->wi.z > 0) != (dot(wi_world, sd.n_side) > 0)) break;
-        // The same bump shadowing as the light samples' (direct_lighting.h).
-        beta *= bs->weight() * bump_shadowing(sd, wi_world);
+        // The same bump shadowing as the light samples' (direct_lighting.h); specular
+        // lobes have no diffuse part.
+        beta *= sd.bumped && !bs->is_specular()
+                    ? bump_shadowed(sd, bsdf, wo, bs->wi, wi_world, bs->f) *
+                          (std::abs(bs->wi.z) / bs->pdf)
+                    : bs->weight();
         // The frame faces wo: a sample below it crossed the surface, into or out of a volume.
         if (kMedia && bs->wi.z < 0)
             cross_surface(ctx, media.stack, sp.material, sd.front_face, int(sp.instance));

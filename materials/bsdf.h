@@ -36,6 +36,10 @@ public:
         *pdf_out = pdf(wo, wi, mode);
         return eval(wo, wi, mode);
     }
+    // The diffuse lobes' share of eval(wo, wi) (same frame and measure, no cosine): what
+    // a normal map's bump shadowing darkens (integrators/direct_lighting.h). Glossy,
+    // specular and transmission lobes have none; 0 unless a model has diffuse lobes.
+    virtual Spectrum eval_diffuse(Vec3 wo, Vec3 wi, Transport mode) const { return Spectrum(0); }
     // u_lobe chooses a lobe, u the direction within it. Empty: no valid sample.
     virtual std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Vec2 u,
                                              Transport mode) const = 0;

@@ -64,6 +64,12 @@ Spectrum GltfBsdf::eval(Vec3 wo, Vec3 wi, Transport mode) const {
     return Spectrum(m_coat->eval(wo, wi, mode)) + below * coat_scale(wo, wi);
 }
 
+Spectrum GltfBsdf::eval_diffuse(Vec3 wo, Vec3 wi, Transport mode) const {
+    Spectrum below = core().eval_diffuse(wo, wi, mode);
+    if (m_sheen) below = below * sheen_scale(wo, wi);
+    return m_coat ? below * coat_scale(wo, wi) : below;
+}
+
 float GltfBsdf::pdf(Vec3 wo, Vec3 wi, Transport mode) const {
     const Choice c = choose(wo);
     float p = c.core * core().pdf(wo, wi, mode);

@@ -35,6 +35,8 @@ public:
     GltfBsdf(const Core& core, const std::optional<SheenLobe>& sheen,
              const std::optional<ClearcoatLobe>& coat);
     Spectrum eval(Vec3 wo, Vec3 wi, Transport mode) const override;
+    // The core's diffuse part, seen through the sheen and the coat as eval sees it.
+    Spectrum eval_diffuse(Vec3 wo, Vec3 wi, Transport mode) const override;
     float pdf(Vec3 wo, Vec3 wi, Transport mode) const override;
     // eval and pdf in one pass: the core's own eval_pdf (MetalRoughBsdf shares its half
     // vector, D(h) and wo's terms), the same values bit for bit.

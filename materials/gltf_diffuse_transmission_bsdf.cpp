@@ -88,6 +88,13 @@ Spectrum GltfDiffuseTransmissionBsdf::eval(Vec3 wo, Vec3 wi, Transport mode) con
     return f;
 }
 
+Spectrum GltfDiffuseTransmissionBsdf::eval_diffuse(Vec3 wo, Vec3 wi, Transport mode) const {
+    Spectrum f(0);
+    if (m_w[kOpaque] > 0) f += m_opaque.eval_diffuse(wo, wi, mode) * m_w[kOpaque];
+    if (m_w[kDiffuseTransmission] > 0) f += m_dt.eval(wo, wi) * m_w[kDiffuseTransmission];
+    return f;
+}
+
 float GltfDiffuseTransmissionBsdf::pdf(Vec3 wo, Vec3 wi, Transport mode) const {
     float q[kCount];
     probabilities(wo, q);

@@ -31,6 +31,8 @@ public:
                                 float transmission, const DielectricParams& dielectric,
                                 bool thin_walled = false);
     Spectrum eval(Vec3 wo, Vec3 wi, Transport mode) const override;
+    // The opaque part's diffuse reflection and the diffuse transmission lobe.
+    Spectrum eval_diffuse(Vec3 wo, Vec3 wi, Transport mode) const override;
     float pdf(Vec3 wo, Vec3 wi, Transport mode) const override;
     std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Vec2 u, Transport mode) const override;
     bool has_specular() const override;

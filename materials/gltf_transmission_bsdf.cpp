@@ -24,6 +24,11 @@ Spectrum GltfTransmissionBsdf::eval(Vec3 wo, Vec3 wi, Transport mode) const {
     return f;
 }
 
+Spectrum GltfTransmissionBsdf::eval_diffuse(Vec3 wo, Vec3 wi, Transport mode) const {
+    if (!(m_weight < 1)) return Spectrum(0);
+    return m_opaque.eval_diffuse(wo, wi, mode) * (1 - m_weight);
+}
+
 float GltfTransmissionBsdf::pdf(Vec3 wo, Vec3 wi, Transport mode) const {
     float p = dielectric().pdf(wo, wi, mode) * m_weight;
     if (m_weight < 1) p += m_opaque.pdf(wo, wi, mode) * (1 - m_weight);

@@ -25,6 +25,7 @@ public:
         if (pdf <= 0) return std::nullopt;
         return BsdfSample{wi, m_R * kInvPi, pdf, Lobe::Diffuse, 1};
     }
+    Spectrum eval_diffuse(Vec3 wo, Vec3 wi, Transport m) const override { return eval(wo, wi, m); }
     bool has_specular() const override { return false; }
 
 private:

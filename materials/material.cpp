@@ -10,6 +10,7 @@
 #include "materials/bsdf_prototypes.h"
 #include "materials/dispersion.h"
 #include "materials/fresnel.h"
+#include "materials/normal_map.h"
 #include "materials/specular_inputs.h"
 
 namespace penumbra {
@@ -103,10 +104,11 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     sd.front_face = dot(wo, sp.ng) >= 0;
     const float side = sd.front_face ? 1.0f : -1.0f;
     const Vec3 ng = sp.ng * side;
-    ns = ns * side;
     sd.ng = ng;
-    sd.frame = Frame::from_normal(ns);
     sd.n_side = side_normal(sp, ng);
+    ns = ns * side;
+    if (m.normal_texture.valid()) ns = valid_reflection_normal(sd.n_side, wo, ns);
+    sd.frame = Frame::from_normal(ns);
     sd.bumped = !(sd.n_side == sd.frame.n);
     // KHR_materials_anisotropy turns the frame's x to the anisotropy direction.
     // The call only where there is anisotropy to align (it returns 0 for the rest).
@@ -266,9 +268,12 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
         coat_roughness = std::clamp(std::max(coat_roughness, options.min_roughness), 0.0f, 1.0f);
         // The coat has its own normal map; without one it follows the interpolated
         // normal, not the base's normal map (the clearcoat spec's clearcoatNormalTexture).
-        Vec3 nc = sd.frame.to_local(
-            mapped_normal(scene, m.clearcoat_normal_texture, m.clearcoat_normal_scale, sp) *
-            side);
+        // Bent as the base's normal is (valid_reflection_normal), so that the coat's
+        // mirror direction stays above the surface too.
+        Vec3 nc =
+            mapped_normal(scene, m.clearcoat_normal_texture, m.clearcoat_normal_scale, sp) * side;
+        if (m.clearcoat_normal_texture.valid()) nc = valid_reflection_normal(sd.n_side, wo, nc);
+        nc = sd.frame.to_local(nc);
         if (!(nc.z > 1e-4f)) nc = Vec3(0, 0, 1);  // behind the base normal: no separate frame
         clearcoat = ClearcoatLobe(coat, coat_roughness * coat_roughness, normalize(nc),
                                   options.gltf_distribution);

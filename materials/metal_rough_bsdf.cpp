@@ -314,6 +314,15 @@ Spectrum MetalRoughBsdf::eval(Vec3 wo, Vec3 wi, Transport) const {
     return f;
 }
 
+Spectrum MetalRoughBsdf::eval_diffuse(Vec3 wo, Vec3 wi, Transport) const {
+    if (wo.z <= 0 || wi.z <= 0) return Spectrum(0);
+    if (m_lambert) return m_p.base_color * kInvPi;
+    Vec3 h = wo + wi;
+    if (length_squared(h) == 0) return Spectrum(0);
+    h = normalize(h);
+    return diffuse_term(wo_terms(wo), wi, std::max(0.0f, dot(wo, h)));
+}
+
 float MetalRoughBsdf::pdf_specular(const WoTerms& t, Vec3 wo, Vec3 h) const {
     const float woh = dot(wo, h);
     if (woh <= 0) return 0;

@@ -62,6 +62,8 @@ public:
     Spectrum eval_pdf(Vec3 wo, Vec3 wi, Transport mode, float* pdf_out) const override;
     std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Vec2 u,
                                      Transport mode) const override;
+    // The base's diffuse term of eval (its specular lobe aside).
+    Spectrum eval_diffuse(Vec3 wo, Vec3 wi, Transport mode) const override;
     bool has_specular() const override { return m_delta; }
 
 private:

@@ -13,6 +13,7 @@ public:
     Spectrum eval(Vec3 wo, Vec3 wi, Transport mode) const override;
     float pdf(Vec3 wo, Vec3 wi, Transport mode) const override;
     std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Vec2 u, Transport mode) const override;
+    Spectrum eval_diffuse(Vec3 wo, Vec3 wi, Transport m) const override { return eval(wo, wi, m); }
     bool has_specular() const override { return false; }
 
 private:
