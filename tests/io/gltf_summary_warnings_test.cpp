@@ -100,9 +100,9 @@ TEST(GltfSummaryWarnings, ParserWarningsAreCountedPerKind) {
     EXPECT_EQ(count(log, " (5 times)\n"), 2u) << log;
 }
 
-// A skinned triangle used by two nodes, with float WEIGHTS_0 summing to 1, 0.8 and 0.9995
-// (inside the 1e-3 allowance), and a second primitive with normalized unsigned byte
-// weights 255, 127 + 127 (within half a code per weight of 255) and 200.
+// A skinned triangle used by two nodes, with float WEIGHTS_0 summing to 1, 0.8 and 0.9995,
+// and a second primitive with normalized unsigned byte weights 255, 127 + 127 and 200:
+// all but the two sums of exactly 1 are counted, once although two nodes draw the mesh.
 std::string skin_file(const test::ScratchDir& dir) {
     test::GltfBuilder b;
     const int pos = b.add<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3",
@@ -129,12 +129,12 @@ TEST(GltfSummaryWarnings, UnnormalizedSkinWeightsAreOneWarningPerFile) {
     const std::string path = skin_file(dir);
     const std::string log = warnings_of(path);
     EXPECT_EQ(count(log, "warning: "), 1u) << log;
-    EXPECT_NE(log.find(path + ": skins: the skin weights of 2 vertices in 2 primitive(s) do not "
-                              "sum to 1 (meshes[0].primitives[0] vertex 1 sums to 0.800000); "
-                              "they are used as they are"),
+    EXPECT_NE(log.find(path + ": skins: the skin weights of 4 vertices do not sum to 1, in 1 "
+                              "mesh(es) (meshes[0]); first: meshes[0].primitives[0] vertex 1 "
+                              "sums to 0.800000; each vertex's weights are scaled to sum to 1"),
               std::string::npos)
         << log;
-    EXPECT_EQ(strict_error(path).rfind(path + ": skins: the skin weights of 2 vertices", 0), 0u);
+    EXPECT_EQ(strict_error(path).rfind(path + ": skins: the skin weights of 4 vertices", 0), 0u);
 }
 
 // Zero scale hides a subtree (valid glTF): four such nodes, one of them a child of
