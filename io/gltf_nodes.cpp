@@ -199,7 +199,7 @@ std::unique_ptr<Light> make_light(const GltfContext& ctx, const LightNode& ln, f
 // draws it (the validator's NODE_SKIN_NO_SCENE). Outside it their pose is undefined:
 // three.js draws such a skin collapsed, and we pose those nodes from their own transforms
 // and parents. One warning names each such skin and its nodes outside the scene.
-void warn_skins_outside_scene(const GltfContext& ctx, const std::string& sel,
+void warn_skins_outside_scene(const GltfContext& ctx, int scene_index,
                               const std::vector<bool>& visited) {
     const tinygltf::Model& m = ctx.model;
     std::set<int> skins;  // drawn in this scene
@@ -207,8 +207,21 @@ void warn_skins_outside_scene(const GltfContext& ctx, const std::string& sel,
         if (visited[i] && m.nodes[i].mesh >= 0 && m.nodes[i].skin >= 0 &&
             size_t(m.nodes[i].skin) < m.skins.size())
             skins.insert(m.nodes[i].skin);
+    if (skins.empty()) return;
+    // The scene's tree, including subtrees the traversal skipped under a zero scale (the
+    // tree has been checked: indices in range, no node reached twice).
+    std::vector<bool> reached(m.nodes.size(), false);
+    std::vector<int> stack = m.scenes[size_t(scene_index)].nodes;
+    while (!stack.empty()) {
+        const int n = stack.back();
+        stack.pop_back();
+        if (reached[size_t(n)]) continue;
+        reached[size_t(n)] = true;
+        for (int c : m.nodes[size_t(n)].children)
+            if (c >= 0 && size_t(c) < m.nodes.size()) stack.push_back(c);
+    }
     auto outside = [&](int n) {
-        return n >= 0 && size_t(n) < m.nodes.size() && !visited[size_t(n)];
+        return n >= 0 && size_t(n) < m.nodes.size() && !reached[size_t(n)];
     };
     auto node_name = [&](int n) {
         const std::string& name = m.nodes[size_t(n)].name;
@@ -235,7 +248,8 @@ void warn_skins_outside_scene(const GltfContext& ctx, const std::string& sel,
     if (items.empty()) return;
     std::string list;
     for (const std::string& item : items) list += (list.empty() ? "" : "; ") + item;
-    ctx.warn("skins", std::to_string(items.size()) + " skin(s) drawn in " + sel +
+    ctx.warn("skins", std::to_string(items.size()) + " skin(s) drawn in " +
+                          element("scenes", size_t(scene_index)) +
                           " have nodes outside it, so their pose is undefined (" + list +
                           "); those nodes are posed from their own transforms and parents");
 }
@@ -323,7 +337,7 @@ void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motio
         }
     }
 
-    warn_skins_outside_scene(ctx, sel, visited);
+    warn_skins_outside_scene(ctx, scene_index, visited);
     if (!singular.empty())
         ctx.warn("nodes", std::to_string(singular.size()) +
                               " node(s) have a singular transform (zero scale?) at a time "

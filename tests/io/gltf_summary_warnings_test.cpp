@@ -232,5 +232,24 @@ TEST(GltfSummaryWarnings, SkinOutsideTheSceneIsNamed) {
     EXPECT_EQ(strict_error(path).rfind(path + ": skins: 1 skin(s) drawn in scenes[0]", 0), 0u);
 }
 
+// A joint under a zero-scaled node is in the scene (hidden, not outside it): only the
+// zero scale is reported.
+TEST(GltfSummaryWarnings, SkinJointUnderAZeroScaleIsInTheScene) {
+    const test::ScratchDir dir;
+    test::GltfBuilder b;
+    b.add<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
+    b.add<uint8_t>(std::vector<uint8_t>(12, 0), test::kUByte, "VEC4");
+    b.add<float>({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, test::kFloat, "VEC4");
+    const std::string path = b.write(
+        dir, "skin_hidden_joint.gltf",
+        "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,\"JOINTS_0\":1,"
+        "\"WEIGHTS_0\":2}}]}],\"skins\":[{\"joints\":[2]}],\"nodes\":[{\"mesh\":0,"
+        "\"skin\":0},{\"scale\":[0,0,0],\"children\":[2]},{}],\"scenes\":[{\"nodes\":[0,1]}]",
+        test::BufferStorage::DataUri);
+    const std::string log = warnings_of(path);
+    EXPECT_EQ(count(log, "warning: "), 1u) << log;
+    EXPECT_NE(log.find(": nodes: 1 node(s) have a singular transform"), std::string::npos) << log;
+}
+
 }  // namespace
 }  // namespace penumbra
