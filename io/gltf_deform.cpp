@@ -1,11 +1,10 @@
 #include "io/gltf_deform.h"
 
-#include <algorithm>
 #include <cmath>
 #include <map>
-#include <set>
 
 #include "io/gltf_accessor.h"
+#include "io/gltf_skin_weights.h"
 
 namespace penumbra {
 
@@ -60,57 +59,25 @@ std::vector<Vec3> read_target(const GltfContext& ctx, const std::string& el,
 // One primitive's inputs to deformation, per file vertex.
 struct PrimitiveDeformation {
     std::vector<std::vector<Vec3>> dp, dn;  // per target: POSITION and NORMAL offsets
-    std::vector<float> joints, weights;     // 4 per vertex and JOINTS_n/WEIGHTS_n set
-    size_t influences = 0;                  // sets of 4 influences
+    SkinWeights skin;                       // normalised; empty without a skin
+    size_t vertices = 0;                    // in the file's primitive
 };
 
 PrimitiveDeformation read_primitive(const GltfContext& ctx, const MeshOrigin& origin,
                                     size_t joint_count) {
     const tinygltf::Primitive& prim =
         ctx.model.meshes[size_t(origin.mesh)].primitives[size_t(origin.primitive)];
-    const std::string el =
-        element("meshes", size_t(origin.mesh)) + "." + element("primitives", size_t(origin.primitive));
+    const std::string el = element("meshes", size_t(origin.mesh)) + "." +
+                           element("primitives", size_t(origin.primitive));
     const size_t n = ctx.model.accessors[size_t(prim.attributes.at("POSITION"))].count;
     PrimitiveDeformation d;
+    d.vertices = n;
     for (size_t t = 0; t < prim.targets.size(); ++t) {
         const std::string tel = el + "." + element("targets", t);
         d.dp.push_back(read_target(ctx, tel, prim.targets[t], "POSITION", n));
         d.dn.push_back(read_target(ctx, tel, prim.targets[t], "NORMAL", n));
     }
-    if (joint_count == 0) return d;
-    for (int set = 0;; ++set) {
-        const std::string js = "JOINTS_" + std::to_string(set), ws = "WEIGHTS_" + std::to_string(set);
-        const bool has_j = prim.attributes.count(js), has_w = prim.attributes.count(ws);
-        if (!has_j && !has_w) break;
-        if (has_j != has_w) ctx.fail(el, js + " and " + ws + " must come together");
-        const tinygltf::Accessor& ja = get_accessor(ctx, el, js, prim.attributes.at(js));
-        const tinygltf::Accessor& wa = get_accessor(ctx, el, ws, prim.attributes.at(ws));
-        if (ja.type != TINYGLTF_TYPE_VEC4 || ja.normalized ||
-            (ja.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-             ja.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT))
-            ctx.fail(el, js + " accessor is " + describe_accessor(ja) +
-                             "; expected VEC4 of unsigned byte or short");
-        if (wa.type != TINYGLTF_TYPE_VEC4 ||
-            !(wa.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || wa.normalized))
-            ctx.fail(el, ws + " accessor is " + describe_accessor(wa) +
-                             "; expected VEC4 of float or normalized unsigned byte or short");
-        if (ja.count != n || wa.count != n)
-            ctx.fail(el, js + "/" + ws + " accessors do not have one element per vertex (" +
-                             std::to_string(n) + ")");
-        const std::vector<float> j = read_floats(ctx, prim.attributes.at(js));
-        const std::vector<float> w = read_floats(ctx, prim.attributes.at(ws));
-        for (size_t i = 0; i < j.size(); ++i) {
-            if (!std::isfinite(w[i])) ctx.fail(el, ws + " values are not all finite");
-            if (w[i] != 0 && !(j[i] < float(joint_count)))
-                ctx.fail(el, js + " element " + std::to_string(i / 4) + " names joint " +
-                                 std::to_string(int(j[i])) + " of a skin with " +
-                                 std::to_string(joint_count) + " joints");
-        }
-        d.joints.insert(d.joints.end(), j.begin(), j.end());
-        d.weights.insert(d.weights.end(), w.begin(), w.end());
-        ++d.influences;
-    }
-    if (d.influences == 0) ctx.fail(el, "is skinned but has no JOINTS_0/WEIGHTS_0");
+    if (joint_count > 0) d.skin = read_skin_weights(ctx, el, prim, n, joint_count);
     return d;
 }
 
@@ -237,14 +204,13 @@ std::optional<DeformedObject> add_deformed_object(const GltfContext& ctx,
                 if (skin) {
                     // Linear blend skinning: sum of weight * joint world * inverse bind.
                     Mat4 m;
-                    for (size_t set = 0; set < d.influences; ++set)
+                    const SkinWeights& sw = d.skin;
+                    for (size_t set = 0; set < sw.influences; ++set)
                         for (int c = 0; c < 4; ++c) {
-                            // Set `set` holds 4 entries per file vertex.
-                            const size_t per_set = d.joints.size() / d.influences;
-                            const size_t at = set * per_set + 4 * v + size_t(c);
-                            const float w = d.weights[at];
+                            const size_t at = set * 4 * d.vertices + 4 * v + size_t(c);
+                            const float w = sw.weights[at];
                             if (w == 0) continue;
-                            const Mat4& jm = joint_matrices[size_t(k)][size_t(d.joints[at])];
+                            const Mat4& jm = joint_matrices[size_t(k)][size_t(sw.joints[at])];
                             for (int r = 0; r < 4; ++r)
                                 for (int q = 0; q < 4; ++q) m(r, q) += w * jm(r, q);
                         }
@@ -285,71 +251,6 @@ std::optional<DeformedObject> add_deformed_object(const GltfContext& ctx,
     }
     scene.objects.push_back(std::move(object));
     return DeformedObject{uint32_t(scene.objects.size() - 1), skin.has_value()};
-}
-
-namespace {
-
-// How far a vertex's weight sum may stray from 1: float weights carry exporters' rounding
-// to a few decimals (we allow 1e-3); normalized integers, half a code per weight.
-float weight_tolerance(const tinygltf::Accessor& a, size_t weights) {
-    if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE)
-        return float(weights) * 0.5f / 255.0f + 1e-6f;
-    if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)
-        return float(weights) * 0.5f / 65535.0f + 1e-6f;
-    return 1e-3f;
-}
-
-}  // namespace
-
-void warn_unnormalized_skin_weights(const GltfContext& ctx) {
-    std::set<int> meshes;  // meshes that skinned nodes use, each checked once
-    for (const tinygltf::Node& node : ctx.model.nodes)
-        if (node.skin >= 0 && node.mesh >= 0 && size_t(node.mesh) < ctx.model.meshes.size())
-            meshes.insert(node.mesh);
-    size_t vertices = 0, primitives = 0;
-    std::string example;
-    for (int m : meshes) {
-        const auto& prims = ctx.model.meshes[size_t(m)].primitives;
-        for (size_t p = 0; p < prims.size(); ++p) {
-            std::vector<float> sum;
-            float tolerance = 0;
-            bool readable = true;
-            for (int set = 0; readable; ++set) {
-                const auto it = prims[p].attributes.find("WEIGHTS_" + std::to_string(set));
-                if (it == prims[p].attributes.end()) break;
-                // Only data the deformation code accepts; it reports the rest as errors.
-                try {
-                    const tinygltf::Accessor& a = get_accessor(ctx, "", "WEIGHTS", it->second);
-                    const std::vector<float> w = read_floats(ctx, it->second);
-                    if (a.type != TINYGLTF_TYPE_VEC4 || w.size() != 4 * a.count ||
-                        (set > 0 && w.size() != 4 * sum.size())) {
-                        readable = false;
-                        break;
-                    }
-                    sum.resize(a.count, 0.0f);
-                    for (size_t i = 0; i < w.size(); ++i) sum[i / 4] += w[i];
-                    tolerance = std::max(tolerance, weight_tolerance(a, 4 * size_t(set + 1)));
-                } catch (const SceneError&) {
-                    readable = false;
-                }
-            }
-            if (!readable) continue;
-            size_t bad = 0;
-            for (size_t v = 0; v < sum.size(); ++v) {
-                if (std::abs(sum[v] - 1.0f) <= tolerance) continue;
-                if (bad++ == 0 && example.empty())
-                    example = element("meshes", size_t(m)) + "." + element("primitives", p) +
-                              " vertex " + std::to_string(v) + " sums to " + std::to_string(sum[v]);
-            }
-            vertices += bad;
-            primitives += bad > 0;
-        }
-    }
-    // glTF 2.0, section 3.7.3.3: the weights of a vertex sum to one (a validator error).
-    if (vertices > 0)
-        ctx.warn("skins", "the skin weights of " + std::to_string(vertices) + " vertices in " +
-                              std::to_string(primitives) + " primitive(s) do not sum to 1 (" +
-                              example + "); they are used as they are");
 }
 
 }  // namespace penumbra

@@ -27,8 +27,4 @@ std::optional<DeformedObject> add_deformed_object(const GltfContext& ctx,
                                                   const std::vector<MeshOrigin>& origins,
                                                   Scene& scene);
 
-// One warning for the file (strict: an error) when skinned vertices have weights that do
-// not sum to one: how many, in how many primitives, and the first example.
-void warn_unnormalized_skin_weights(const GltfContext& ctx);
-
 }  // namespace penumbra

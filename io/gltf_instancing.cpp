@@ -38,7 +38,8 @@ std::optional<std::vector<float>> attribute(const GltfContext& ctx, const std::s
 }  // namespace
 
 bool add_gpu_instances(const GltfContext& ctx, const std::string& node_el,
-                       const tinygltf::Node& node, int node_index, const Transform& world,
+                       const tinygltf::Node& node, int node_index, uint32_t object,
+                       const Transform& world,
                        const std::vector<Transform>& motion, Scene& scene) {
     const auto it = node.extensions.find("EXT_mesh_gpu_instancing");
     if (it == node.extensions.end()) return false;
@@ -70,7 +71,7 @@ bool add_gpu_instances(const GltfContext& ctx, const std::string& node_el,
         // Instances are unnamed: a million copies of the node name would cost more than
         // the instances themselves. Their node index identifies them.
         Instance inst;
-        inst.object = uint32_t(node.mesh);
+        inst.object = object;
         inst.to_world = world * local;
         for (const Transform& step : motion) inst.motion.push_back(step * local);
         inst.node = node_index;

@@ -11,12 +11,12 @@
 
 namespace penumbra {
 
-// True when the node carries the extension: its instances were appended to
-// scene.instances (the node's world transform times each instance's TRS). A node that
-// moves (`motion`: its world transforms at the shutter's time steps, empty if still)
-// moves its instances with it.
+// True when the node carries the extension: its instances of Scene::objects[object] (the
+// node's mesh, or its morphed copy) were appended to scene.instances (the node's world
+// transform times each instance's TRS). A node that moves (`motion`: its world
+// transforms at the shutter's time steps, empty if still) moves its instances with it.
 bool add_gpu_instances(const GltfContext& ctx, const std::string& el, const tinygltf::Node& node,
-                       int node_index, const Transform& world,
+                       int node_index, uint32_t object, const Transform& world,
                        const std::vector<Transform>& motion, Scene& scene);
 
 }  // namespace penumbra

@@ -22,6 +22,7 @@
 #include "io/gltf_mesh_checks.h"
 #include "io/gltf_node_motion.h"
 #include "io/gltf_signature.h"
+#include "io/gltf_skin_weights.h"
 #include "io/gltf_variants.h"
 #include "io/scene_color.h"
 
@@ -287,7 +288,7 @@ Scene load_gltf(const std::string& path, const GltfLoadOptions& options, GltfLoa
     // Summary warnings come last: under --strict, an element's own error is reported
     // before them, as without them.
     mesh_checks.report();
-    warn_unnormalized_skin_weights(ctx);
+    warn_unnormalized_skin_weights(ctx, scene, origins);
     st.nodes = clock.lap();
     return scene;
 }

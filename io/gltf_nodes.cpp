@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <set>
 #include <stdexcept>
 
 #include "core/lights/directional_light.h"
@@ -194,6 +195,65 @@ std::unique_ptr<Light> make_light(const GltfContext& ctx, const LightNode& ln, f
     ctx.fail(el, "type '" + gl.type + "' is not point, spot or directional");
 }
 
+// glTF 2.0, section 3.7.3.1: a skin's joints and skeleton root belong to the scene that
+// draws it (the validator's NODE_SKIN_NO_SCENE). Outside it their pose is undefined:
+// three.js draws such a skin collapsed, and we pose those nodes from their own transforms
+// and parents. One warning names each such skin and its nodes outside the scene.
+void warn_skins_outside_scene(const GltfContext& ctx, int scene_index,
+                              const std::vector<bool>& visited) {
+    const tinygltf::Model& m = ctx.model;
+    std::set<int> skins;  // drawn in this scene
+    for (size_t i = 0; i < m.nodes.size(); ++i)
+        if (visited[i] && m.nodes[i].mesh >= 0 && m.nodes[i].skin >= 0 &&
+            size_t(m.nodes[i].skin) < m.skins.size())
+            skins.insert(m.nodes[i].skin);
+    if (skins.empty()) return;
+    // The scene's tree, including subtrees the traversal skipped under a zero scale (the
+    // tree has been checked: indices in range, no node reached twice).
+    std::vector<bool> reached(m.nodes.size(), false);
+    std::vector<int> stack = m.scenes[size_t(scene_index)].nodes;
+    while (!stack.empty()) {
+        const int n = stack.back();
+        stack.pop_back();
+        if (reached[size_t(n)]) continue;
+        reached[size_t(n)] = true;
+        for (int c : m.nodes[size_t(n)].children)
+            if (c >= 0 && size_t(c) < m.nodes.size()) stack.push_back(c);
+    }
+    auto outside = [&](int n) {
+        return n >= 0 && size_t(n) < m.nodes.size() && !reached[size_t(n)];
+    };
+    auto node_name = [&](int n) {
+        const std::string& name = m.nodes[size_t(n)].name;
+        return element("nodes", size_t(n)) + (name.empty() ? "" : " '" + name + "'");
+    };
+    std::vector<std::string> items;
+    for (int s : skins) {
+        const tinygltf::Skin& skin = m.skins[size_t(s)];
+        std::vector<std::string> joints;
+        for (int j : skin.joints)
+            if (outside(j)) joints.push_back(node_name(j));
+        const bool root = outside(skin.skeleton);
+        if (joints.empty() && !root) continue;
+        std::string item =
+            element("skins", size_t(s)) + (skin.name.empty() ? "" : " '" + skin.name + "'") + ": ";
+        if (root)
+            item += "its skeleton root " + node_name(skin.skeleton) +
+                    (joints.empty() ? "" : " and ");
+        if (!joints.empty())
+            item += std::to_string(joints.size()) + " of its " +
+                    std::to_string(skin.joints.size()) + " joints" + examples(joints);
+        items.push_back(item);
+    }
+    if (items.empty()) return;
+    std::string list;
+    for (const std::string& item : items) list += (list.empty() ? "" : "; ") + item;
+    ctx.warn("skins", std::to_string(items.size()) + " skin(s) drawn in " +
+                          element("scenes", size_t(scene_index)) +
+                          " have nodes outside it, so their pose is undefined (" + list +
+                          "); those nodes are posed from their own transforms and parents");
+}
+
 }  // namespace
 
 void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motion,
@@ -203,7 +263,7 @@ void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motio
     std::vector<bool> visited(m.nodes.size(), false);
     std::vector<LightNode> lights;
     // Renderable but surprising: one summary warning per kind, after the tree.
-    std::vector<std::string> singular, instanced_deformed;
+    std::vector<std::string> singular, instanced_skinned;
     // Depth-first with an explicit stack, so that deep hierarchies cannot overflow the
     // call stack; each entry is a node and its parent's world transform.
     std::vector<std::pair<int, Transform>> stack;
@@ -244,14 +304,17 @@ void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motio
                 scene.objects[size_t(node.mesh)].meshes.empty()
                     ? std::nullopt
                     : add_deformed_object(ctx, motion, index, origins, scene);
-            if (deformed && node.extensions.count("EXT_mesh_gpu_instancing"))
-                instanced_deformed.push_back(el);
+            // A skinned mesh is already in world space; its node's transform and motion are
+            // ignored. EXT_mesh_gpu_instancing defines no instance transform for it.
+            const bool world_space = deformed && deformed->world_space;
+            if (world_space && node.extensions.count("EXT_mesh_gpu_instancing"))
+                instanced_skinned.push_back(el);
+            const uint32_t object = deformed ? deformed->object : uint32_t(node.mesh);
             if (!scene.objects[size_t(node.mesh)].meshes.empty() &&
-                (deformed || !add_gpu_instances(ctx, el, node, index, world, steps, scene))) {
+                (world_space ||
+                 !add_gpu_instances(ctx, el, node, index, object, world, steps, scene))) {
                 Instance inst;
-                inst.object = deformed ? deformed->object : uint32_t(node.mesh);
-                // A skinned mesh is already in world space; its node's motion is ignored.
-                const bool world_space = deformed && deformed->world_space;
+                inst.object = object;
                 inst.to_world = world_space ? Transform() : world;
                 if (!world_space) inst.motion = steps;
                 inst.node = index;
@@ -274,16 +337,17 @@ void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motio
         }
     }
 
+    warn_skins_outside_scene(ctx, scene_index, visited);
     if (!singular.empty())
         ctx.warn("nodes", std::to_string(singular.size()) +
                               " node(s) have a singular transform (zero scale?) at a time "
                               "step; their subtrees are skipped" +
                               examples(singular));
-    if (!instanced_deformed.empty())
-        ctx.warn("nodes", std::to_string(instanced_deformed.size()) +
-                              " node(s) use EXT_mesh_gpu_instancing on a skinned or morphed "
-                              "mesh: one deformed copy is drawn, at the node" +
-                              examples(instanced_deformed));
+    if (!instanced_skinned.empty())
+        ctx.warn("nodes", std::to_string(instanced_skinned.size()) +
+                              " node(s) use EXT_mesh_gpu_instancing on a skinned mesh, which "
+                              "has no instance transform: one skinned copy is drawn" +
+                              examples(instanced_skinned));
 
     const Bounds3 bounds = scene.bounds();
     const float radius = bounds.empty() ? 1.0f : std::max(1.0f, 0.5f * length(bounds.diagonal()));

@@ -193,5 +193,92 @@ TEST(GltfDeform, JointInAParentCycleIsAnError) {
     }
 }
 
+// Morph targets with a skin, several nodes drawing one skinned mesh, and animated parents.
+// Joint 0 is node 1 (scale 2), child of node 4, which moves from y = 0 to y = 10 over
+// [0, 1] s; no inverse bind matrices (identity). One morph target moves every vertex +1
+// in x. Node 0 (mesh.weights 0.5, its own translation x = 100) and node 3
+// (node.weights 1) draw the mesh, both under node 2, which moves from x = 0 to x = 10:
+// a skinned mesh ignores its node's transform and motion (glTF 2.0, 3.7.3.3).
+std::string morph_skin_file(const test::ScratchDir& dir) {
+    test::GltfBuilder b;
+    const int pos = b.add<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
+    const int dp = b.add<float>({1, 0, 0, 1, 0, 0, 1, 0, 0}, test::kFloat, "VEC3");
+    const int joints = b.add<uint8_t>(std::vector<uint8_t>(12, 0), test::kUByte, "VEC4");
+    const int weights = b.add<float>({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, test::kFloat, "VEC4");
+    const int in = b.add<float>({0, 1}, test::kFloat, "SCALAR");
+    const int along_x = b.add<float>({0, 0, 0, 10, 0, 0}, test::kFloat, "VEC3");
+    const int along_y = b.add<float>({0, 0, 0, 0, 10, 0}, test::kFloat, "VEC3");
+    auto sampler = [&](int out) {
+        return "{\"input\":" + std::to_string(in) + ",\"output\":" + std::to_string(out) + "}";
+    };
+    return b.write(
+        dir, "morph_skin.gltf",
+        "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
+            ",\"JOINTS_0\":" + std::to_string(joints) + ",\"WEIGHTS_0\":" +
+            std::to_string(weights) + "},\"targets\":[{\"POSITION\":" + std::to_string(dp) +
+            "}]}],\"weights\":[0.5]}],\"skins\":[{\"joints\":[1]}],\"nodes\":["
+            "{\"mesh\":0,\"skin\":0,\"translation\":[100,0,0]},{\"scale\":[2,2,2]},"
+            "{\"children\":[0,3]},{\"mesh\":0,\"skin\":0,\"weights\":[1]},{\"children\":[1]}],"
+            "\"scenes\":[{\"nodes\":[2,4]}],\"animations\":[{\"samplers\":[" +
+            sampler(along_x) + "," + sampler(along_y) +
+            "],\"channels\":[{\"sampler\":0,\"target\":{\"node\":2,\"path\":\"translation\"}},"
+            "{\"sampler\":1,\"target\":{\"node\":4,\"path\":\"translation\"}}]}]",
+        test::BufferStorage::DataUri);
+}
+
+// Morph first, then skin: vertex 1 (1, 0, 0) morphed by 0.5 is (1.5, 0, 0), scaled by the
+// joint to (3, 0, 0), lifted by the joint's parent to y = 5 at 0.5 s. Skinning first would
+// give (2.5, 5, 0).
+TEST(GltfDeform, MorphBeforeSkinPerNodeUnderAnimatedParents) {
+    const test::ScratchDir dir;
+    const std::string path = morph_skin_file(dir);
+    Scene s = load_at(path, 0.5, 0.5);
+    ASSERT_EQ(s.instances.size(), 2u);
+    EXPECT_NE(s.instances[0].object, s.instances[1].object) << "a copy per node";
+    for (const Instance& inst : s.instances) {
+        EXPECT_TRUE(inst.to_world.matrix().is_identity()) << inst.name;
+        EXPECT_TRUE(inst.motion.empty()) << inst.name;
+    }
+    expect_near(mesh_of(s, 0).positions[1], {3, 5, 0}, "node 0, vertex 1");
+    expect_near(mesh_of(s, 0).positions[0], {1, 5, 0}, "node 0, vertex 0");
+    expect_near(mesh_of(s, 1).positions[1], {4, 5, 0}, "node 3 (weight 1), vertex 1");
+
+    // Over the shutter the joint's parent moves the skin; the mesh nodes' parent does not.
+    s = load_at(path, 0, 1);
+    const TriangleMesh& m = mesh_of(s, 0);
+    ASSERT_EQ(m.motion_positions.size(), 2u);
+    expect_near(m.motion_positions[0][1], {3, 0, 0}, "open");
+    expect_near(m.motion_positions[1][1], {3, 10, 0}, "close");
+    EXPECT_TRUE(s.instances[0].motion.empty());
+}
+
+// EXT_mesh_gpu_instancing on a morphed mesh: every instance draws the morphed copy, at
+// node world x instance transform (the extension's WorldPosition = NodeWorld x Instance x
+// vertex, the vertex morphed).
+TEST(GltfDeform, GpuInstancesOfAMorphedMeshDrawTheMorphedCopy) {
+    const test::ScratchDir dir;
+    test::GltfBuilder b;
+    b.add<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
+    b.add<float>({0, 0, 1, 0, 0, 1, 0, 0, 1}, test::kFloat, "VEC3");
+    b.add<float>({0, 0, 0, 5, 0, 0}, test::kFloat, "VEC3");
+    const std::string path = b.write(
+        dir, "instanced_morph.gltf",
+        "\"extensionsUsed\":[\"EXT_mesh_gpu_instancing\"],\"meshes\":[{\"primitives\":[{"
+        "\"attributes\":{\"POSITION\":0},\"targets\":[{\"POSITION\":1}]}],\"weights\":[1]}],"
+        "\"nodes\":[{\"mesh\":0,\"translation\":[0,1,0],\"extensions\":{"
+        "\"EXT_mesh_gpu_instancing\":{\"attributes\":{\"TRANSLATION\":2}}}}],"
+        "\"scenes\":[{\"nodes\":[0]}]",
+        test::BufferStorage::DataUri);
+    testing::internal::CaptureStderr();
+    const Scene s = load_gltf(path);
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+    ASSERT_EQ(s.instances.size(), 2u);
+    EXPECT_NE(s.instances[0].object, 0u) << "the morphed copy, not the file's mesh";
+    EXPECT_EQ(s.instances[0].object, s.instances[1].object);
+    expect_near(mesh_of(s, 0).positions[1], {1, 0, 1}, "morphed vertex");
+    expect_near(s.instances[0].to_world.point({0, 0, 0}), {0, 1, 0}, "instance 0");
+    expect_near(s.instances[1].to_world.point({0, 0, 0}), {5, 1, 0}, "instance 1");
+}
+
 }  // namespace
 }  // namespace penumbra

@@ -1,7 +1,8 @@
 // Out-of-spec but renderable data gets one summary warning per kind and file, with a
 // count and an example: properties animated by several animations (Fox.glb), channels
 // without a target node, skin weights that do not sum to one, nodes hidden by a zero scale,
-// instanced deformed meshes. --strict makes each an error. (Mesh data: gltf_mesh_checks_test.)
+// instanced skinned meshes, skins outside the scene. --strict makes each an error. (Mesh
+// data: gltf_mesh_checks_test.)
 #include <gtest/gtest.h>
 
 #include "core/error.h"
@@ -100,9 +101,9 @@ TEST(GltfSummaryWarnings, ParserWarningsAreCountedPerKind) {
     EXPECT_EQ(count(log, " (5 times)\n"), 2u) << log;
 }
 
-// A skinned triangle used by two nodes, with float WEIGHTS_0 summing to 1, 0.8 and 0.9995
-// (inside the 1e-3 allowance), and a second primitive with normalized unsigned byte
-// weights 255, 127 + 127 (within half a code per weight of 255) and 200.
+// A skinned triangle used by two nodes, with float WEIGHTS_0 summing to 1, 0.8 and 0.9995,
+// and a second primitive with normalized unsigned byte weights 255, 127 + 127 and 200:
+// all but the two sums of exactly 1 are counted, once although two nodes draw the mesh.
 std::string skin_file(const test::ScratchDir& dir) {
     test::GltfBuilder b;
     const int pos = b.add<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3",
@@ -129,12 +130,12 @@ TEST(GltfSummaryWarnings, UnnormalizedSkinWeightsAreOneWarningPerFile) {
     const std::string path = skin_file(dir);
     const std::string log = warnings_of(path);
     EXPECT_EQ(count(log, "warning: "), 1u) << log;
-    EXPECT_NE(log.find(path + ": skins: the skin weights of 2 vertices in 2 primitive(s) do not "
-                              "sum to 1 (meshes[0].primitives[0] vertex 1 sums to 0.800000); "
-                              "they are used as they are"),
+    EXPECT_NE(log.find(path + ": skins: the skin weights of 4 vertices do not sum to 1, in 1 "
+                              "mesh(es) (meshes[0]); first: meshes[0].primitives[0] vertex 1 "
+                              "sums to 0.800000; each vertex's weights are scaled to sum to 1"),
               std::string::npos)
         << log;
-    EXPECT_EQ(strict_error(path).rfind(path + ": skins: the skin weights of 2 vertices", 0), 0u);
+    EXPECT_EQ(strict_error(path).rfind(path + ": skins: the skin weights of 4 vertices", 0), 0u);
 }
 
 // Zero scale hides a subtree (valid glTF): four such nodes, one of them a child of
@@ -164,31 +165,90 @@ TEST(GltfSummaryWarnings, SingularNodesAreOneWarning) {
     EXPECT_EQ(strict_error(path).rfind(path + ": nodes: 3 node(s) have a singular", 0), 0u);
 }
 
-// A morphed mesh (weight 1 on its one target) placed by two nodes with
-// EXT_mesh_gpu_instancing: each draws one deformed copy; one warning for both.
-TEST(GltfSummaryWarnings, InstancedDeformedMeshesAreOneWarning) {
+// A skinned mesh placed by two nodes with EXT_mesh_gpu_instancing: a skinned mesh is in
+// world space and the extension gives it no instance transform, so each node draws one
+// skinned copy; one warning for both.
+TEST(GltfSummaryWarnings, InstancedSkinnedMeshesAreOneWarning) {
     const test::ScratchDir dir;
     test::GltfBuilder b;
     b.add<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
-    b.add<float>({0, 0, 1, 0, 0, 1, 0, 0, 1}, test::kFloat, "VEC3");
+    b.add<uint8_t>(std::vector<uint8_t>(12, 0), test::kUByte, "VEC4");
+    b.add<float>({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, test::kFloat, "VEC4");
     b.add<float>({0, 0, 0, 5, 0, 0}, test::kFloat, "VEC3");
     const std::string instanced =
-        "{\"mesh\":0,\"extensions\":{\"EXT_mesh_gpu_instancing\":{\"attributes\":"
-        "{\"TRANSLATION\":2}}}}";
+        "{\"mesh\":0,\"skin\":0,\"extensions\":{\"EXT_mesh_gpu_instancing\":{\"attributes\":"
+        "{\"TRANSLATION\":3}}}}";
     const std::string path = b.write(
-        dir, "instanced_morph.gltf",
+        dir, "instanced_skin.gltf",
         "\"extensionsUsed\":[\"EXT_mesh_gpu_instancing\"],\"meshes\":[{\"primitives\":[{"
-        "\"attributes\":{\"POSITION\":0},\"targets\":[{\"POSITION\":1}]}],\"weights\":[1]}],"
-        "\"nodes\":[" +
-            instanced + "," + instanced + "],\"scenes\":[{\"nodes\":[0,1]}]",
+        "\"attributes\":{\"POSITION\":0,\"JOINTS_0\":1,\"WEIGHTS_0\":2}}]}],"
+        "\"skins\":[{\"joints\":[2]}],\"nodes\":[" +
+            instanced + "," + instanced + ",{}],\"scenes\":[{\"nodes\":[0,1,2]}]",
         test::BufferStorage::DataUri);
     const std::string log = warnings_of(path);
     EXPECT_EQ(count(log, "warning: "), 1u) << log;
-    EXPECT_NE(log.find(path + ": nodes: 2 node(s) use EXT_mesh_gpu_instancing on a skinned or "
-                              "morphed mesh: one deformed copy is drawn, at the node (nodes[0], "
-                              "nodes[1])\n"),
+    EXPECT_NE(log.find(path + ": nodes: 2 node(s) use EXT_mesh_gpu_instancing on a skinned mesh, "
+                              "which has no instance transform: one skinned copy is drawn "
+                              "(nodes[0], nodes[1])\n"),
               std::string::npos)
         << log;
+    EXPECT_EQ(load_gltf(path).instances.size(), 2u);
+}
+
+// A skin whose skeleton root (node 1) and joints (nodes 1 and 2) are in no scene: its pose
+// is undefined (NODE_SKIN_NO_SCENE). One warning names the skin and the nodes; the render
+// goes on, with the joints posed from their own transforms and parents.
+TEST(GltfSummaryWarnings, SkinOutsideTheSceneIsNamed) {
+    const test::ScratchDir dir;
+    test::GltfBuilder b;
+    b.add<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
+    b.add<uint8_t>({0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, test::kUByte, "VEC4");
+    b.add<float>({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, test::kFloat, "VEC4");
+    const std::string skinned = "{\"mesh\":0,\"skin\":0}";
+    const std::string path = b.write(
+        dir, "skin_no_scene.gltf",
+        "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,\"JOINTS_0\":1,"
+        "\"WEIGHTS_0\":2}}]}],\"skins\":[{\"name\":\"rig\",\"skeleton\":1,\"joints\":[1,2]}],"
+        "\"nodes\":[" + skinned + ",{\"name\":\"hips\",\"translation\":[0,3,0],"
+        "\"children\":[2]},{\"translation\":[0,0,1]}," + skinned + "],"
+        "\"scenes\":[{\"nodes\":[0,3]}]",
+        test::BufferStorage::DataUri);
+    Scene s;
+    testing::internal::CaptureStderr();
+    s = load_gltf(path);
+    const std::string log = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(count(log, "warning: "), 1u) << log;
+    EXPECT_NE(log.find(path + ": skins: 1 skin(s) drawn in scenes[0] have nodes outside it, so "
+                              "their pose is undefined (skins[0] 'rig': its skeleton root "
+                              "nodes[1] 'hips' and 2 of its 2 joints (nodes[1] 'hips', "
+                              "nodes[2])); those nodes are posed from their own transforms "
+                              "and parents\n"),
+              std::string::npos)
+        << log;
+    ASSERT_EQ(s.instances.size(), 2u);
+    const TriangleMesh& m = s.meshes[s.objects[s.instances[0].object].meshes.at(0)];
+    EXPECT_EQ(m.positions[0], Vec3(0, 3, 0));  // joint 0: the root at y = 3
+    EXPECT_EQ(m.positions[1], Vec3(1, 3, 1));  // joint 1: its child, 1 further in z
+    EXPECT_EQ(strict_error(path).rfind(path + ": skins: 1 skin(s) drawn in scenes[0]", 0), 0u);
+}
+
+// A joint under a zero-scaled node is in the scene (hidden, not outside it): only the
+// zero scale is reported.
+TEST(GltfSummaryWarnings, SkinJointUnderAZeroScaleIsInTheScene) {
+    const test::ScratchDir dir;
+    test::GltfBuilder b;
+    b.add<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
+    b.add<uint8_t>(std::vector<uint8_t>(12, 0), test::kUByte, "VEC4");
+    b.add<float>({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, test::kFloat, "VEC4");
+    const std::string path = b.write(
+        dir, "skin_hidden_joint.gltf",
+        "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,\"JOINTS_0\":1,"
+        "\"WEIGHTS_0\":2}}]}],\"skins\":[{\"joints\":[2]}],\"nodes\":[{\"mesh\":0,"
+        "\"skin\":0},{\"scale\":[0,0,0],\"children\":[2]},{}],\"scenes\":[{\"nodes\":[0,1]}]",
+        test::BufferStorage::DataUri);
+    const std::string log = warnings_of(path);
+    EXPECT_EQ(count(log, "warning: "), 1u) << log;
+    EXPECT_NE(log.find(": nodes: 1 node(s) have a singular transform"), std::string::npos) << log;
 }
 
 }  // namespace
