@@ -232,6 +232,11 @@ ShadingData shade(const Scene& scene, const SurfacePoint& sp, Vec3 wo,
     d.distribution = options.gltf_distribution;
     d.reflectance = min(specular_color, Spectrum(1)) * specular;
     d.transmittance = sd.base_color;
+    // KHR_materials_iridescence: the film's Fresnel on the dielectric's reflection and
+    // refraction alike, the film on the outside (the viewer's side on a front face).
+    d.iridescence = p.iridescence;
+    d.film = p.film;
+    d.film_above = sd.front_face;
     const bool opaque = transmission == 0 || metallic == 1;
     if (!layered) {
         if (opaque) {

@@ -18,6 +18,11 @@ namespace penumbra {
 // the sheet never gains energy and loses only what single-scattering GGX loses.
 // DielectricParams::eta is the sheet's IOR over that of the medium on both sides; the
 // model is reciprocal, needs no eta^2 factor, and BsdfSample::eta is always 1.
+// A film (DielectricParams::iridescence) coats one face: that face reflects R1 =
+// mix(R, F_film, factor) per channel (film_interface_reflectance), the other R, and the
+// incoherent sum over the sheet, R' = (R1 + R - 2 R1 R) / (1 - R1 R), is the same from
+// either side. R' is a colour, transmission takes 1 - R' per channel, and reflection is
+// chosen with probability mean(R').
 class ThinDielectricBsdf final : public Bsdf {
 public:
     static constexpr float kDeltaAlpha = DielectricBsdf::kDeltaAlpha;
@@ -30,6 +35,8 @@ public:
 
     // R' of a sheet of relative IOR eta at incidence cosine cos_theta (either sign).
     static float sheet_reflectance(float cos_theta, float eta);
+    // R' per channel with the film (the one above without).
+    Spectrum reflectance(float cos_theta) const;
 
 private:
     // A pair (wo, wi) seen through its microfacet: wi (mirrored back to wo's side when
@@ -45,6 +52,7 @@ private:
     DielectricParams m_p;
     MicrofacetDistribution m_dist;
     bool m_delta;
+    bool m_film;
 };
 
 }  // namespace penumbra

@@ -91,4 +91,17 @@ Spectrum thin_film_reflectance(const ThinFilm& film, Spectrum base_f0, float cos
     return result;
 }
 
+Spectrum film_interface_reflectance(const ThinFilm& film, float factor, float eta,
+                                    float cos_outside, float F) {
+    const float r = (eta - 1) / (eta + 1);
+    const Spectrum f_film = thin_film_reflectance(film, Spectrum(r * r), cos_outside);
+    return Spectrum(F) + (f_film - Spectrum(F)) * std::clamp(factor, 0.0f, 1.0f);
+}
+
+float film_outside_cos(float cos_inside, float eta) {
+    const float c = std::min(std::abs(cos_inside), 1.0f);
+    const float sin2 = eta * eta * (1 - c * c);
+    return sin2 < 1 ? std::sqrt(1 - sin2) : -1.0f;
+}
+
 }  // namespace penumbra
