@@ -251,8 +251,8 @@ std::string format_summary(const std::vector<JobResult>& results) {
                : r.image_warning == "mostly clipped" ? std::string("CLIPPED")
                                                      : std::string("-");
     };
-    line("%-*s  %5s  %-7s  %8s  %7s  %8s  %10s%s%s  %s\n", int(width), "scene", "frame",
-         "status", "time", "spp", "rays/s", "relMSE", denoise_columns("estimate", "noisy").c_str(),
+    line("%-*s  %5s  %-7s  %8s  %7s  %8s  %10s%s%s  %s\n", int(width), "scene", "frame", "status",
+         "time", "spp", "rays/s", "relMSE", denoise_columns("estimate", "noisy").c_str(),
          image_column("image").c_str(), "output / error");
     size_t counts[4] = {0, 0, 0, 0};
     for (const JobResult& r : results) {
@@ -275,8 +275,8 @@ std::string format_summary(const std::vector<JobResult>& results) {
         black + clipped > 0 ? "; " + std::to_string(black) + " nearly black, " +
                                   std::to_string(clipped) + " mostly clipped (see their warnings)"
                             : std::string();
-    line("%zu images: %zu ok, %zu partial, %zu failed, %zu skipped%s\n", results.size(),
-         counts[0], counts[1], counts[2], counts[3], flagged.c_str());
+    line("%zu images: %zu ok, %zu partial, %zu failed, %zu skipped%s\n", results.size(), counts[0],
+         counts[1], counts[2], counts[3], flagged.c_str());
     return out;
 }
 

@@ -125,27 +125,31 @@ std::optional<ImageWarning> image_warning(const ImageExposure& e, const RenderCo
         if (!hint.empty())
             causes.push_back(hint);
         else if (setup.file_lights > 0 && o.light_units == "photometric")
-            causes.push_back("light intensities in W/sr and W/m^2 rather than candela and lux "
-                             "(--light-units radiometric reads them 683 times brighter)");
+            causes.push_back(
+                "light intensities in W/sr and W/m^2 rather than candela and lux "
+                "(--light-units radiometric reads them 683 times brighter)");
         if (e.p99 > 0)
             causes.push_back("too little exposure (--exposure " +
                              stops(o.exposure + std::log2(kClipLuminance / e.p99)) +
                              " brings the brightest 1% of pixels to display white)");
         else
-            causes.push_back("almost no light reaches the camera (--env-color R G B or --env "
-                             "FILE lights the scene from around it)");
+            causes.push_back(
+                "almost no light reaches the camera (--env-color R G B or --env "
+                "FILE lights the scene from around it)");
     } else if (e.mostly_clipped()) {
         w.kind = "mostly clipped";
         w.message = "image mostly clipped: " + percent(e.clipped_fraction) +
-                    " of its pixels exceed display white (over " +
-                    percent(kMaxClippedFraction) + ")";
+                    " of its pixels exceed display white (over " + percent(kMaxClippedFraction) +
+                    ")";
         if (setup.file_lights > 0 && o.light_units == "radiometric")
-            causes.push_back("the file's intensities read as W/sr and W/m^2 (--light-units "
-                             "photometric, the spec's candela and lux, reads them 683 times "
-                             "dimmer)");
+            causes.push_back(
+                "the file's intensities read as W/sr and W/m^2 (--light-units "
+                "photometric, the spec's candela and lux, reads them 683 times "
+                "dimmer)");
         if (setup.default_lights && o.default_light == "on")
-            causes.push_back("the default lights added to the scene's own (--default-light "
-                             "off leaves the scene to its own lights)");
+            causes.push_back(
+                "the default lights added to the scene's own (--default-light "
+                "off leaves the scene to its own lights)");
         causes.push_back("too much exposure (--exposure " +
                          stops(o.exposure + std::log2(kMiddleGrey / std::max(e.median, 1e-30f))) +
                          " brings the median pixel to 18% grey)");

@@ -268,10 +268,9 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     s->scene = load_gltf(path, load, &load_stats);
     s->load_seconds = since(t0);
     Scene& scene = s->scene;
-    if (o.no_file_lights) {
-        if (!scene.lights.empty())
-            LOG_INFO(path << ": " << scene.lights.size()
-                          << " punctual light(s) of the file left out (--no-file-lights)");
+    if (o.no_file_lights && !scene.lights.empty()) {
+        LOG_INFO(path << ": " << scene.lights.size()
+                      << " punctual light(s) of the file left out (--no-file-lights)");
         scene.lights.clear();
     }
     s->file_lights = scene.lights.size();

@@ -57,14 +57,15 @@ std::string lamp_scene(const test::ScratchDir& dir, const std::string& name, con
                              0.1f, 0.01f},
           test::kFloat, "VEC3");
     b.add(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, test::kUShort, "SCALAR");
-    b.add(std::vector<float>{-0.5f, -0.5f, 3.5f, 0.5f, -0.5f, 3.5f, 0.5f, 0.5f, 3.5f, -0.5f,
-                             0.5f, 3.5f},
+    b.add(std::vector<float>{-0.5f, -0.5f, 3.5f, 0.5f, -0.5f, 3.5f, 0.5f, 0.5f, 3.5f, -0.5f, 0.5f,
+                             3.5f},
           test::kFloat, "VEC3");
     b.add(std::vector<uint16_t>{0, 2, 1, 0, 3, 2}, test::kUShort, "SCALAR");
     std::string nodes = R"({"mesh": 0}, {"camera": 0, "translation": [0, 0, 3]})";
     std::string roots = "0, 1";
     if (s.light) {
-        nodes += R"(, {"translation": [0, 0, 2], "extensions": {"KHR_lights_punctual": {"light": 0}}})";
+        nodes +=
+            R"(, {"translation": [0, 0, 2], "extensions": {"KHR_lights_punctual": {"light": 0}}})";
         roots += ", 2";
     }
     int next = s.light ? 3 : 2;
@@ -91,11 +92,13 @@ std::string lamp_scene(const test::ScratchDir& dir, const std::string& name, con
                  {"primitives": [{"attributes": {"POSITION": 3}, "indices": 4, "material": 1}]}],
       "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
       "nodes": [)" + nodes + R"(],
-      "scenes": [{"nodes": [)" + roots + R"(]}], "scene": 0)";
+      "scenes": [{"nodes": [)" + roots +
+                                R"(]}], "scene": 0)";
     std::string json = b.json(members, test::BufferStorage::DataUri);
     if (!s.generator.empty()) {
         const std::string asset = R"("asset":{"version":"2.0")";
-        json.replace(json.find(asset), asset.size(), asset + ",\"generator\":\"" + s.generator + "\"");
+        json.replace(json.find(asset), asset.size(),
+                     asset + ",\"generator\":\"" + s.generator + "\"");
     }
     return dir.write(name, json);
 }
@@ -191,14 +194,15 @@ TEST(ExposureCli, ANearlyBlackImageEndsWithAWarningNamingTheOptions) {
 // 10 cd is 0.0015 W/sr (dark: under 1e-3 on the square), read as W/sr it lights it.
 TEST(ExposureCli, BlenderOneLightsAreNamedAsWattsWrittenAsCandela) {
     const test::ScratchDir dir;
-    const std::string old = lamp_scene(dir, "old.gltf", lamp(10, true, false,
-                                                         "Khronos glTF Blender I/O v1.6.16"));
+    const std::string old =
+        lamp_scene(dir, "old.gltf", lamp(10, true, false, "Khronos glTF Blender I/O v1.6.16"));
     const test::CliResult a = render(old, dir.file("a.exr"), {});
     ASSERT_EQ(a.status, 0) << a.output;
     EXPECT_TRUE(has(a, "leave the view dark")) << a.output;
-    EXPECT_TRUE(has(a, "likely cause: the file's lights look like watts written as candela "
-                       "('Khronos glTF Blender I/O v1.6.16' wrote a lamp's power as its "
-                       "intensity; --light-units radiometric reads them as W/sr"))
+    EXPECT_TRUE(has(a,
+                    "likely cause: the file's lights look like watts written as candela "
+                    "('Khronos glTF Blender I/O v1.6.16' wrote a lamp's power as its "
+                    "intensity; --light-units radiometric reads them as W/sr"))
         << a.output;
     const test::CliResult off = render(old, dir.file("off.exr"), {"--default-light", "off"});
     EXPECT_TRUE(has(off, "image nearly black")) << off.output;
@@ -210,8 +214,8 @@ TEST(ExposureCli, BlenderOneLightsAreNamedAsWattsWrittenAsCandela) {
     EXPECT_FALSE(has(w, "leave the view dark")) << w.output;
     EXPECT_FALSE(warned(w)) << w.output;
     // A later exporter writes candela: dark is then not blamed on units it got right.
-    const std::string now = lamp_scene(dir, "now.gltf", lamp(10, true, false,
-                                                         "Khronos glTF Blender I/O v3.6.27"));
+    const std::string now =
+        lamp_scene(dir, "now.gltf", lamp(10, true, false, "Khronos glTF Blender I/O v3.6.27"));
     const test::CliResult n = render(now, dir.file("n.exr"), {});
     EXPECT_TRUE(has(n, "leave the view dark")) << n.output;
     EXPECT_FALSE(has(n, "watts written as candela")) << n.output;
@@ -228,8 +232,8 @@ TEST(ExposureCli, AMostlyClippedImageNamesExposureAndUnits) {
               0u);
     // The suggested exposure brings the median to 18% grey: rendered with it, no warning.
     std::smatch m;
-    ASSERT_TRUE(std::regex_search(r.output, m,
-                                  std::regex("--exposure ([-+0-9.]+) brings the median")))
+    ASSERT_TRUE(
+        std::regex_search(r.output, m, std::regex("--exposure ([-+0-9.]+) brings the median")))
         << r.output;
     const double ev = std::stod(m[1].str());
     EXPECT_LT(ev, 5.0);  // an exposure to use instead of +5, not a change
@@ -239,8 +243,9 @@ TEST(ExposureCli, AMostlyClippedImageNamesExposureAndUnits) {
     // Candela read as W/sr: 683 times too bright, and the units are named.
     const test::CliResult u = render(lit, dir.file("units.exr"), {"--light-units", "radiometric"});
     EXPECT_TRUE(has(u, "image mostly clipped")) << u.output;
-    EXPECT_TRUE(has(u, "--light-units photometric, the spec's candela and lux, reads them 683 "
-                       "times dimmer"))
+    EXPECT_TRUE(has(u,
+                    "--light-units photometric, the spec's candela and lux, reads them 683 "
+                    "times dimmer"))
         << u.output;
 }
 
@@ -255,14 +260,14 @@ TEST(ExposureCli, ABatchTableFlagsNearlyBlackImages) {
     EXPECT_TRUE(std::regex_search(r.output, std::regex("dim\\.gltf .* BLACK .*dim\\.exr")))
         << r.output;
     EXPECT_FALSE(std::regex_search(r.output, std::regex("lit\\.gltf[^\n]*BLACK"))) << r.output;
-    EXPECT_TRUE(has(r, "2 images: 2 ok, 0 partial, 0 failed, 0 skipped; 1 nearly black, 0 "
-                       "mostly clipped"))
+    EXPECT_TRUE(has(r,
+                    "2 images: 2 ok, 0 partial, 0 failed, 0 skipped; 1 nearly black, 0 "
+                    "mostly clipped"))
         << r.output;
     // Without flagged images the table is as before: no image column, no count.
-    const test::CliResult ok =
-        test::run_penumbra({"render", lit, "--out-dir", dir.file("out2"), "--name",
-                            "{scene}_{index}.exr", "--frames", "0-1", "--spp", "1", "--width",
-                            "16", "--no-preview"});
+    const test::CliResult ok = test::run_penumbra(
+        {"render", lit, "--out-dir", dir.file("out2"), "--name", "{scene}_{index}.exr", "--frames",
+         "0-1", "--spp", "1", "--width", "16", "--no-preview"});
     ASSERT_EQ(ok.status, 0) << ok.output;
     EXPECT_TRUE(has(ok, "2 images: 2 ok, 0 partial, 0 failed, 0 skipped\n")) << ok.output;
     EXPECT_FALSE(has(ok, " image ")) << ok.output;
@@ -287,8 +292,8 @@ TEST(ExposureCli, NoFileLightsLeavesTheEnvironmentAndTheEmittersAsTheOnlyLight) 
     EXPECT_EQ(attribute(dir.file("with.exr"), "penumbra:no_file_lights"), "0");
     EXPECT_FALSE(test::same_pixels(dir.file("no.exr"), dir.file("with.exr")));
 
-    const std::string job = dir.write(
-        "job.json", R"({"jobs": [{"scene": ")" + with + R"(", "no_file_lights": true,
+    const std::string job =
+        dir.write("job.json", R"({"jobs": [{"scene": ")" + with + R"(", "no_file_lights": true,
                                   "output": "j.exr", "spp": 4, "width": 32}]})");
     Args args = {"render", "--job", job, "--no-preview", "-q"};
     args.insert(args.end(), env.begin(), env.end());
