@@ -267,6 +267,7 @@ Scene load_gltf(const std::string& path, const GltfLoadOptions& options, GltfLoa
 
     Scene scene;
     scene.source = path;
+    scene.generator = model.asset.generator;
     scene.shutter_open = shutter.open;
     scene.shutter_close = shutter.close;
     std::vector<MeshOrigin> origins;

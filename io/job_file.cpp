@@ -60,6 +60,7 @@ public:
                                             "compression",
                                             "light_units",
                                             "default_light",
+                                            "no_file_lights",
                                             "exposure",
                                             "strict",
                                             "max_texture_pixels",
@@ -136,6 +137,7 @@ public:
         boolean("half", s.half);
         choice("light_units", s.light_units, {"photometric", "radiometric"});
         choice("default_light", s.default_light, {"auto", "on", "off"});
+        boolean("no_file_lights", s.no_file_lights);
         choice("light_sampler", s.light_sampler, {"uniform", "power", "bvh", "auto"});
         choice("triangle_sampling", s.triangle_sampling, {"area", "solid-angle"});
         choice("env_sampling", s.env_sampling, {"auto", "full", "compensated"});

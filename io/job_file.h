@@ -37,6 +37,7 @@ struct JobSettings {
     // Light: as --light-units, --default-light and --exposure (stops).
     std::optional<std::string> light_units, default_light;
     std::optional<double> exposure;
+    std::optional<bool> no_file_lights;  // as --no-file-lights
     // As --strict and --max-texture-pixels.
     std::optional<bool> strict;
     std::optional<uint64_t> max_texture_pixels;

@@ -72,6 +72,7 @@ void apply(const JobSettings& s, RenderCommandOptions& o) {
     if (s.compression) o.compression = *s.compression;
     if (s.light_units) o.light_units = *s.light_units;
     if (s.default_light) o.default_light = *s.default_light;
+    if (s.no_file_lights) o.no_file_lights = *s.no_file_lights;
     if (s.exposure) o.exposure = float(*s.exposure);
     if (s.strict) o.strict = *s.strict;
     if (s.max_texture_pixels) o.max_texture_pixels = *s.max_texture_pixels;
@@ -235,9 +236,24 @@ std::string format_summary(const std::vector<JobResult>& results) {
     auto denoise_columns = [&](const std::string& estimate, const std::string& noisy) {
         return denoised ? "  " + pad(estimate, 10) + "  " + pad(noisy, 10) : std::string();
     };
-    line("%-*s  %5s  %-7s  %8s  %7s  %8s  %10s%s  %s\n", int(width), "scene", "frame", "status",
+    // Images that drew a nearly-black or mostly-clipped warning: a column of their own,
+    // so that one bad image among thousands stands out; without any, as before.
+    size_t black = 0, clipped = 0;
+    for (const JobResult& r : results) {
+        black += r.image_warning == "nearly black";
+        clipped += r.image_warning == "mostly clipped";
+    }
+    auto image_column = [&](const std::string& flag) {
+        return black + clipped > 0 ? "  " + pad(flag, 7) : std::string();
+    };
+    auto flag_of = [](const JobResult& r) {
+        return r.image_warning == "nearly black"     ? std::string("BLACK")
+               : r.image_warning == "mostly clipped" ? std::string("CLIPPED")
+                                                     : std::string("-");
+    };
+    line("%-*s  %5s  %-7s  %8s  %7s  %8s  %10s%s%s  %s\n", int(width), "scene", "frame", "status",
          "time", "spp", "rays/s", "relMSE", denoise_columns("estimate", "noisy").c_str(),
-         "output / error");
+         image_column("image").c_str(), "output / error");
     size_t counts[4] = {0, 0, 0, 0};
     for (const JobResult& r : results) {
         static const char* const kStatus[] = {"ok", "partial", "failed", "skipped"};
@@ -248,15 +264,19 @@ std::string format_summary(const std::vector<JobResult>& results) {
             ran && r.seconds > 0 ? format_count(r.rays / r.seconds) : std::string("-");
         const std::string note =
             r.message.empty() ? r.output : (r.output.empty() ? "" : r.output + ": ") + r.message;
-        line("%-*s  %5s  %-7s  %8s  %7s  %8s  %10s%s  %s\n", int(width),
+        line("%-*s  %5s  %-7s  %8s  %7s  %8s  %10s%s%s  %s\n", int(width),
              fs::path(r.scene).filename().string().c_str(), frame.c_str(), kStatus[int(r.status)],
              ran ? format_duration(r.seconds).c_str() : "-",
              ran ? std::to_string(r.spp).c_str() : "-", rate.c_str(), sci(r.relmse, ran).c_str(),
              denoise_columns(sci(r.denoise_relmse_estimate, ran), sci(r.noisy_relmse, ran)).c_str(),
-             note.c_str());
+             image_column(flag_of(r)).c_str(), note.c_str());
     }
-    line("%zu images: %zu ok, %zu partial, %zu failed, %zu skipped\n", results.size(),
-         counts[0], counts[1], counts[2], counts[3]);
+    const std::string flagged =
+        black + clipped > 0 ? "; " + std::to_string(black) + " nearly black, " +
+                                  std::to_string(clipped) + " mostly clipped (see their warnings)"
+                            : std::string();
+    line("%zu images: %zu ok, %zu partial, %zu failed, %zu skipped%s\n", results.size(), counts[0],
+         counts[1], counts[2], counts[3], flagged.c_str());
     return out;
 }
 

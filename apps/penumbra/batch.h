@@ -52,6 +52,8 @@ struct JobResult {
     // --denoise: the denoiser's estimate of the image's relMSE, and the relMSE of the
     // noisy image (before denoising) against --reference, when given.
     std::optional<double> denoise_relmse_estimate, noisy_relmse;
+    // "nearly black" or "mostly clipped" when the image drew that warning; else empty.
+    std::string image_warning;
 };
 
 // One row per job: scene, frame, status, time, spp, rays/s, relMSE against the

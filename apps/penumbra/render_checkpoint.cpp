@@ -39,7 +39,8 @@ std::string render_fingerprint(const BatchJob& job, const SceneSetup& setup,
       << " max_depth=" << o.max_depth << " accel=" << o.accel << " camera=" << o.camera
       << " variant=" << o.variant << " env=" << o.env << " env_intensity=" << o.env_intensity
       << " env_rotation=" << o.env_rotation << " default_light=" << o.default_light
-      << " light_units=" << o.light_units << " fstop=" << o.fstop
+      << " light_units=" << o.light_units << " no_file_lights=" << o.no_file_lights
+      << " fstop=" << o.fstop
       << " aperture_radius=" << o.aperture_radius << " focus_distance=" << o.focus_distance
       << " aperture_blades=" << o.aperture_blades << " shutter=" << setup.scene.shutter_open << "-"
       << setup.scene.shutter_close << " time=" << ropt.time << " aovs=" << o.aovs

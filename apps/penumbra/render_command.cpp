@@ -11,6 +11,7 @@
 #include "apps/penumbra/batch.h"
 #include "apps/penumbra/denoise_step.h"
 #include "apps/penumbra/interrupt.h"
+#include "apps/penumbra/light_check.h"
 #include "apps/penumbra/output_options.h"
 #include "apps/penumbra/render_checkpoint.h"
 #include "apps/penumbra/render_metadata.h"
@@ -294,6 +295,14 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
     if (stats.interrupted) save_checkpoint(film, stats.spp);
 
     Metadata metadata = render_metadata(o, path, *setup, stats);
+    // A band is a part of the image: the merged image is what a viewer sees.
+    const std::optional<ImageWarning> warning =
+        job.band < 0 ? image_warning(measure_exposure(film.resolve(), o.exposure), o, *setup)
+                     : std::nullopt;
+    if (warning) {
+        metadata.push_back({"penumbra:image_warning", warning->message});
+        result.image_warning = warning->kind;
+    }
     const std::unique_ptr<DenoiseStep> denoised = denoise_job(job, film, stats.spp, output);
     if (denoised && o.timing_metadata)
         metadata.push_back({"penumbra:denoise_seconds", float(denoised->seconds)});
@@ -317,6 +326,8 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
     if (!o.quiet)
         print_image_report(
             {path, output, files.preview, o, *setup, stats, write_s, written, denoised.get()});
+    // Last, where a batch's log is read: the image exists, and why it looks wrong.
+    if (warning) LOG_WARNING(output << ": " << warning->message);
 }
 
 }  // namespace

@@ -56,6 +56,7 @@ struct RenderCommandOptions {
     // scene_setup.cpp), on, off.
     std::string default_light = "auto";
     std::string light_units = "photometric";  // KHR_lights_punctual: photometric | radiometric
+    bool no_file_lights = false;              // leave out the file's punctual lights
     bool strict = false;  // every scene warning is an error (GltfLoadOptions::strict)
     uint64_t max_texture_pixels = kDefaultMaxTexturePixels;  // larger images are refused
     bool quiet = false;

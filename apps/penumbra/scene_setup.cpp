@@ -1,5 +1,6 @@
 #include "apps/penumbra/scene_setup.h"
 
+#include "apps/penumbra/light_check.h"
 #include "apps/penumbra/sampling_options.h"
 
 #include <chrono>
@@ -145,6 +146,9 @@ void add_image_options(CLI::App* cmd, RenderCommandOptions& o) {
         ->check(CLI::IsMember({"auto", "on", "off"}));
     cmd->add_flag_callback(
         "--no-default-light", [&o] { o.default_light = "off"; }, "Same as --default-light off");
+    cmd->add_flag("--no-file-lights", o.no_file_lights,
+                  "Leave out the file's punctual lights (KHR_lights_punctual), so that --env or "
+                  "--env-color can be the only light; emissive surfaces still emit");
     cmd->add_option("--light-units", o.light_units,
                     "KHR_lights_punctual intensities: photometric (candela and lux, as the "
                     "spec says, converted at 683 lm/W) or radiometric (read as W/sr and W/m^2)")
@@ -264,6 +268,12 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     s->scene = load_gltf(path, load, &load_stats);
     s->load_seconds = since(t0);
     Scene& scene = s->scene;
+    if (o.no_file_lights && !scene.lights.empty()) {
+        LOG_INFO(path << ": " << scene.lights.size()
+                      << " punctual light(s) of the file left out (--no-file-lights)");
+        scene.lights.clear();
+    }
+    s->file_lights = scene.lights.size();
     if (!scene.images.empty()) {
         // What the texture store costs (docs/performance.md), pyramids included.
         double bytes = 0, texels = 0;
@@ -363,6 +373,10 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
         o.microfacet == "beckmann" ? MicrofacetType::Beckmann : MicrofacetType::Ggx;
     s->materials.gltf_layering =
         o.gltf_layering == "spec" ? GltfLayering::Spec : GltfLayering::AlbedoScaled;
+    // What the camera sees decides too: the file's lights can pass the rule above and
+    // still leave the view dark (a filament inside its lamp, watts written as candela).
+    if (mode == DefaultLightMode::Auto && !s->default_lights && !s->lights->environment())
+        add_default_lights_if_view_dark(*s, o, light_options);
     return s;
 }
 

@@ -33,6 +33,7 @@ struct SceneSetup {
     std::unique_ptr<Camera> camera;
     MaterialOptions materials;
     bool default_lights = false;  // the default key and fill lights were added
+    size_t file_lights = 0;       // the file's punctual lights rendered (0 with --no-file-lights)
     // The colour pipeline (--ocio-config, --working-space, ...): the scene's colours
     // were converted into its working space at load; outputs go through it.
     std::unique_ptr<ColorPipeline> color;

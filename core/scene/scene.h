@@ -85,6 +85,7 @@ struct CameraDesc {
 
 struct Scene {
     std::string source;  // file the scene came from
+    std::string generator;  // the tool that wrote it (glTF asset.generator), for messages
     std::vector<TriangleMesh> meshes;
     std::vector<Object> objects;
     std::vector<Instance> instances;

@@ -119,7 +119,8 @@ TEST(JobFile, LightKeys) {
     const JobFile f = parse_job_file(
         R"({"defaults": {"light_units": "radiometric", "exposure": 1.5, "light_sampler": "power"},
             "jobs": [{"scene": "a.gltf", "default_light": "off", "exposure": -2,
-                      "triangle_sampling": "area", "env_sampling": "full"}]})",
+                      "triangle_sampling": "area", "env_sampling": "full",
+                      "no_file_lights": true}]})",
         "/jobs/j.json");
     EXPECT_EQ(f.defaults.light_sampler, "power");
     EXPECT_EQ(f.jobs[0].settings.triangle_sampling, "area");
@@ -131,6 +132,8 @@ TEST(JobFile, LightKeys) {
     EXPECT_EQ(f.jobs[0].settings.default_light, "off");
     EXPECT_EQ(f.jobs[0].settings.exposure, -2.0);
     EXPECT_FALSE(f.jobs[0].settings.light_units);
+    EXPECT_EQ(f.jobs[0].settings.no_file_lights, true);
+    EXPECT_FALSE(f.defaults.no_file_lights);
     const std::pair<const char*, const char*> bad[] = {
         {R"("light_units": "lumens")",
          "j.json: jobs[0].light_units: 'lumens' is not one of: photometric, radiometric"},
@@ -138,6 +141,7 @@ TEST(JobFile, LightKeys) {
         {R"("default_light": "maybe")",
          "j.json: jobs[0].default_light: 'maybe' is not one of: auto, on, off"},
         {R"("exposure": "bright")", "j.json: jobs[0].exposure: expected a finite number"},
+        {R"("no_file_lights": "yes")", "j.json: jobs[0].no_file_lights: expected true or false"},
         {R"("exposure": 100)", "j.json: jobs[0].exposure: expected stops in [-64, 64]"},
         {R"("light_sampler": "tree")",
          "j.json: jobs[0].light_sampler: 'tree' is not one of: uniform, power, bvh, auto"},
