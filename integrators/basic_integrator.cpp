@@ -23,7 +23,7 @@ Spectrum BasicIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         }
         const SurfacePoint sp = make_surface_point(scene, ray, *hit);
         // Before the first bounce, as in PathIntegrator::trace.
-        if (depth == 0 && camera_culls(scene, sp, ray.d)) {
+        if (depth == 0 && ctx.camera_culling && camera_culls(scene, sp, ray.d)) {
             pass_culled(sp, ray);
             if (++passes > 256) break;
             continue;

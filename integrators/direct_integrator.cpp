@@ -33,7 +33,7 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
         }
         const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
         // Before the first bounce, as in PathIntegrator::trace.
-        if (depth == 0 && camera_culls(ctx.scene, sp, ray.d)) {
+        if (depth == 0 && ctx.camera_culling && camera_culls(ctx.scene, sp, ray.d)) {
             pass_culled(sp, ray);
             if (++passes > 256) break;
             continue;

@@ -11,7 +11,7 @@ std::optional<VisibleSurface> first_visible_surface(Ray& ray, const RenderContex
         const std::optional<Hit> hit = ctx.accel.intersect(ray);
         if (!hit) return std::nullopt;
         const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
-        if (camera && camera_culls(ctx.scene, sp, ray.d)) {
+        if (camera && ctx.camera_culling && camera_culls(ctx.scene, sp, ray.d)) {
             pass_culled(sp, ray);
             continue;
         }

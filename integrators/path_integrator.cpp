@@ -120,7 +120,7 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
         // Only the camera's straight line culls back faces (camera_culling.h); after a
         // bounce the path carries light, which sees both sides.
-        if (depth == 0 && camera_culls(ctx.scene, sp, ray.d)) {
+        if (depth == 0 && ctx.camera_culling && camera_culls(ctx.scene, sp, ray.d)) {
             pass_culled(sp, ray);
             if (++passes > 256) break;
             keep_draws = true;
