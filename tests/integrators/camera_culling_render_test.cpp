@@ -289,6 +289,8 @@ TEST(CameraCullingRender, AMirrorShowsTheBackOfASingleSidedSurface) {
     test::add_instance(
         scene, test::add_quad_object(scene, {2, -2, 0}, {2, -2, -4}, {2, 2, -4}, {2, 2, 0}, wall),
         Transform());
+    // A point light on that side of the wall, 1 from where the reflected ray meets it.
+    scene.lights.push_back(std::make_unique<PointLight>(Vec3(1, 0, -2), Spectrum(1)));
     const auto accel = make_accel(AccelType::Embree, scene);
     const LightSet lights(scene, nullptr);
     const RenderContext ctx{scene, *accel, lights};
@@ -298,6 +300,14 @@ TEST(CameraCullingRender, AMirrorShowsTheBackOfASingleSidedSurface) {
     EXPECT_NEAR(g.depth, 4.0f, 1e-4f);
     const Spectrum f = fresnel_schlick(Spectrum(0.9f, 0.6f, 0.3f), 1, std::sqrt(0.5f));
     EXPECT_NEAR(g.albedo.z, f.z * 0.8f, 1e-5f);
+    // The beauty: the wall's lit back in the mirror, about f 0.8 / pi (1 / 1^2) in blue;
+    // exactly 0 if the reflected ray passed through the wall (no environment).
+    for (const char* integrator : kIntegrators) {
+        auto sampler = make_sampler(SamplerType::Independent, 1, 3);
+        sampler->start_pixel_sample({0, 0}, 0);
+        const Spectrum L = make_integrator(integrator, {})->Li(ray, ctx, *sampler);
+        EXPECT_GT(L.z, 0.5f * f.z * 0.8f / kPi) << integrator;
+    }
 }
 
 }  // namespace
