@@ -1,7 +1,7 @@
 #include "integrators/basic_integrator.h"
 
-#include "core/surface_point.h"
 #include "core/camera/camera_culling.h"
+#include "core/surface_point.h"
 #include "integrators/direct_lighting.h"
 #include "materials/material.h"
 

@@ -5,8 +5,8 @@
 
 namespace penumbra {
 
-std::optional<float> focus_distance_at(const CameraDesc& camera, int width, int height,
-                                       float x, float y, const Scene& scene, const Accel& accel) {
+std::optional<float> focus_distance_at(const CameraDesc& camera, int width, int height, float x,
+                                       float y, const Scene& scene, const Accel& accel) {
     const PerspectiveCamera pinhole(camera.to_world, camera.yfov, width, height);
     CameraSample s;
     s.film = {x, y};

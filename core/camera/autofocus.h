@@ -12,7 +12,7 @@ namespace penumbra {
 // width x height image (pinhole ray through the point) that the camera sees, passing the
 // backs of single-sided surfaces as the integrators do (camera_culling.h); empty when the
 // ray escapes.
-std::optional<float> focus_distance_at(const CameraDesc& camera, int width, int height,
-                                       float x, float y, const Scene& scene, const Accel& accel);
+std::optional<float> focus_distance_at(const CameraDesc& camera, int width, int height, float x,
+                                       float y, const Scene& scene, const Accel& accel);
 
 }  // namespace penumbra

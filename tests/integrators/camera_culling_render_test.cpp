@@ -57,9 +57,9 @@ const Transform kOutside = Transform::look_at({0, 0, 4}, {0, 0, 0}, {0, 1, 0});
 Film render_view(const Scene& scene, AccelType type, const std::string& integrator,
                  const Transform& eye, float yfov, float environment, AovSet aovs = {}) {
     const auto accel = make_accel(type, scene);
-    const LightSet lights(scene, environment > 0
-                                     ? std::make_unique<EnvironmentLight>(Spectrum(environment), 10.0f)
-                                     : nullptr);
+    const LightSet lights(
+        scene, environment > 0 ? std::make_unique<EnvironmentLight>(Spectrum(environment), 10.0f)
+                               : nullptr);
     const RenderContext ctx{scene, *accel, lights};
     const auto integ = make_integrator(integrator, {});
     const PerspectiveCamera camera(eye, yfov, kSize, kSize);
@@ -215,10 +215,10 @@ TEST(CameraCullingRender, ACulledSurfaceStillCastsItsShadow) {
         for (bool occluder : {true, false}) {
             Scene scene;
             const int m = test::add_lambertian(scene, Spectrum(0.5f));
-            test::add_instance(scene,
-                               test::add_quad_object(scene, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5},
-                                                     {-5, 0, -5}, m),
-                               Transform());
+            test::add_instance(
+                scene,
+                test::add_quad_object(scene, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, {-5, 0, -5}, m),
+                Transform());
             if (occluder) {
                 const Vec3 c0(-0.5f, 1, -0.5f), c1(0.5f, 1, -0.5f), c2(0.5f, 1, 0.5f),
                     c3(-0.5f, 1, 0.5f);  // counter-clockwise from below
@@ -230,7 +230,8 @@ TEST(CameraCullingRender, ACulledSurfaceStillCastsItsShadow) {
             scene.lights.push_back(std::make_unique<PointLight>(Vec3(0, 3, 0), Spectrum(4)));
             for (const char* integrator : {"direct", "basic"})
                 for (AccelType type : kAccels) {
-                    const Image img = render_view(scene, type, integrator, k.eye, k.yfov, 0).resolve();
+                    const Image img =
+                        render_view(scene, type, integrator, k.eye, k.yfov, 0).resolve();
                     if (occluder)
                         EXPECT_EQ(max_over(img, 1), 0.0f) << integrator << " up " << k.facing_up;
                     else

@@ -20,8 +20,8 @@ Scene square(bool double_sided, const Transform& xf, Vec3 normals = {}) {
     Scene scene;
     const int m = test::add_lambertian(scene, Spectrum(0.5f));
     scene.materials[size_t(m)].double_sided = double_sided;
-    const uint32_t obj = test::add_quad_object(scene, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0},
-                                               {-1, 1, 0}, m);
+    const uint32_t obj =
+        test::add_quad_object(scene, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, m);
     if (!(normals == Vec3())) {
         for (Vec3& n : scene.meshes[scene.objects[obj].meshes[0]].normals) n = normals;
     }
@@ -42,8 +42,10 @@ bool culled_from(const Scene& scene, float from_z) {
         EXPECT_TRUE(hit.has_value()) << name;
         if (!hit) return false;
         const bool culled = camera_culls(scene, make_surface_point(scene, ray, *hit), ray.d);
-        if (first) EXPECT_EQ(culled, *first) << name;
-        else first = culled;
+        if (first)
+            EXPECT_EQ(culled, *first) << name;
+        else
+            first = culled;
     }
     return first.value_or(false);
 }
@@ -102,14 +104,14 @@ TEST(CameraCulling, AutofocusFocusesOnWhatTheCameraSees) {
         const int near = test::add_lambertian(scene, Spectrum(0.5f));
         scene.materials[size_t(near)].double_sided = double_sided;
         const int far = test::add_lambertian(scene, Spectrum(0.5f));
-        test::add_instance(scene,
-                           test::add_quad_object(scene, {-1, -1, -1}, {-1, 1, -1}, {1, 1, -1},
-                                                 {1, -1, -1}, near),
-                           Transform());
-        test::add_instance(scene,
-                           test::add_quad_object(scene, {-2, -2, -3}, {2, -2, -3}, {2, 2, -3},
-                                                 {-2, 2, -3}, far),
-                           Transform());
+        test::add_instance(
+            scene,
+            test::add_quad_object(scene, {-1, -1, -1}, {-1, 1, -1}, {1, 1, -1}, {1, -1, -1}, near),
+            Transform());
+        test::add_instance(
+            scene,
+            test::add_quad_object(scene, {-2, -2, -3}, {2, -2, -3}, {2, 2, -3}, {-2, 2, -3}, far),
+            Transform());
         CameraDesc cam;
         for (const std::string& name : accel_type_names()) {
             const auto accel = make_accel(parse_accel_type(name), scene);
