@@ -1,5 +1,6 @@
 #include "integrators/basic_integrator.h"
 
+#include "core/camera/camera_culling.h"
 #include "core/surface_point.h"
 #include "integrators/direct_lighting.h"
 #include "materials/material.h"
@@ -21,6 +22,12 @@ Spectrum BasicIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
             break;
         }
         const SurfacePoint sp = make_surface_point(scene, ray, *hit);
+        // Before the first bounce, as in PathIntegrator::trace.
+        if (depth == 0 && ctx.camera_culling && camera_culls(scene, sp, ray.d)) {
+            pass_culled(sp, ray);
+            if (++passes > 256) break;
+            continue;
+        }
         const Vec3 wo_world = normalize(-ray.d);
         const ShadingData sd = shade(scene, sp, wo_world, ctx.materials);
         // Alpha coverage as in the other integrators (direct_lighting.h).

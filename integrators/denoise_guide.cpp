@@ -35,7 +35,7 @@ GuideRecord denoise_guide(const Ray& camera_ray, const RenderContext& ctx, uint6
     Vec3 from = camera_ray.o;
     float depth = 0;
     for (int bounce = 0;; ++bounce) {
-        const std::optional<VisibleSurface> s = first_visible_surface(ray, ctx, rng);
+        const std::optional<VisibleSurface> s = first_visible_surface(ray, ctx, rng, bounce == 0);
         if (!s) return rec;
         const SurfacePoint& sp = s->sp;
         const ShadingData& sd = s->sd;

@@ -1,5 +1,6 @@
 #include "integrators/direct_integrator.h"
 
+#include "core/camera/camera_culling.h"
 #include "integrators/direct_lighting.h"
 
 namespace penumbra {
@@ -31,6 +32,12 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
             break;
         }
         const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
+        // Before the first bounce, as in PathIntegrator::trace.
+        if (depth == 0 && ctx.camera_culling && camera_culls(ctx.scene, sp, ray.d)) {
+            pass_culled(sp, ray);
+            if (++passes > 256) break;
+            continue;
+        }
         const Vec3 wo_world = normalize(-ray.d);
         dispersion_channel(ctx, media, sp.material, sampler, beta);
         const bool front = dot(wo_world, sp.ng) >= 0;  // as shade() decides it

@@ -1,13 +1,20 @@
 #include "integrators/first_hit.h"
 
+#include "core/camera/camera_culling.h"
+
 namespace penumbra {
 
-std::optional<VisibleSurface> first_visible_surface(Ray& ray, const RenderContext& ctx, Rng& rng) {
+std::optional<VisibleSurface> first_visible_surface(Ray& ray, const RenderContext& ctx, Rng& rng,
+                                                    bool camera) {
     // As the path integrator does: a bounded number of see-through layers.
     for (int layer = 0; layer <= 256; ++layer) {
         const std::optional<Hit> hit = ctx.accel.intersect(ray);
         if (!hit) return std::nullopt;
         const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
+        if (camera && ctx.camera_culling && camera_culls(ctx.scene, sp, ray.d)) {
+            pass_culled(sp, ray);
+            continue;
+        }
         if (ctx.has_alpha) {
             const float opacity = surface_opacity(ctx.scene, sp);
             if (opacity < 1 && (opacity <= 0 || rng.next_float() >= opacity)) {

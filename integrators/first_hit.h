@@ -22,8 +22,11 @@ struct VisibleSurface {
 
 // Traces `ray` to the first surface it does not pass through; empty if it escapes.
 // Alpha-masked and blended surfaces are passed through stochastically, as the
-// integrators do, with numbers from rng; `ray` is left as the segment that hit.
-std::optional<VisibleSurface> first_visible_surface(Ray& ray, const RenderContext& ctx, Rng& rng);
+// integrators do, with numbers from rng; `ray` is left as the segment that hit. With
+// `camera` (a camera ray before its first bounce; false for a bounced ray), the backs of
+// single-sided surfaces are passed through too (camera_culling.h).
+std::optional<VisibleSurface> first_visible_surface(Ray& ray, const RenderContext& ctx, Rng& rng,
+                                                    bool camera = true);
 
 // The first-hit AOVs of ray (a camera ray). The random numbers are hashed from `key`
 // (seed, pixel, sample) rather than drawn from the sampler, so the beauty's sample

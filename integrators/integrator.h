@@ -43,6 +43,10 @@ struct RenderContext {
     const Accel& accel;
     const LightSet& lights;
     bool has_alpha = false;  // some material is MASK or BLEND: rays test coverage
+    // Camera rays pass through the backs of single-sided surfaces (camera_culling.h), as
+    // in every render. Off, Li is the radiance along any ray, wherever it starts: for
+    // measuring light transport from inside a scene.
+    bool camera_culling = true;
     // How glTF materials become BSDFs (--microfacet). A caller that changes the
     // distribution or layering afterwards gets no prototypes (BsdfPrototypes::find).
     MaterialOptions materials{};

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/sampling/path_sampler.h"
+#include "core/camera/camera_culling.h"
 #include "integrators/direct_lighting.h"
 #include "materials/bsdf_calls.h"
 
@@ -75,14 +76,20 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         PathSampler::Deferred1d lobe;
         float u_rr = 0;
     } early;
+    // A culled surface is no vertex: the camera ray goes on with the draws already taken.
+    bool keep_draws = false;
     for (;;) {
         if constexpr (kEarlyDraws) {
-            early.light = draw_light(draws);
-            early.u_dir = draws.get_2d();
-            early.lobe = draws.defer_1d();
-            if (depth + 1 >= m_options.rr_depth) early.u_rr = draws.get_1d();
+            if (!keep_draws) {
+                early.light = draw_light(draws);
+                early.u_dir = draws.get_2d();
+                early.lobe = draws.defer_1d();
+                if (depth + 1 >= m_options.rr_depth) early.u_rr = draws.get_1d();
+            }
         }
-        // The given hit is the camera ray's own: after an alpha pass-through, trace again.
+        keep_draws = false;
+        // The given hit is the camera ray's own: after a pass-through (alpha or culled),
+        // trace again.
         const std::optional<Hit> hit =
             first_hit && depth == 0 && passes == 0 ? *first_hit : ctx.accel.intersect(ray);
         // The medium the segment lies in absorbs along it up to the hit. A ray that
@@ -111,6 +118,14 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
             break;
         }
         const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
+        // Only the camera's straight line culls back faces (camera_culling.h); after a
+        // bounce the path carries light, which sees both sides.
+        if (depth == 0 && ctx.camera_culling && camera_culls(ctx.scene, sp, ray.d)) {
+            pass_culled(sp, ray);
+            if (++passes > 256) break;
+            keep_draws = true;
+            continue;
+        }
         const Vec3 wo_world = normalize(-ray.d);
         // Without volumes these change nothing and draw no sample (path_media.h).
         PathVolume volume;

@@ -208,7 +208,7 @@ std::unique_ptr<EnvironmentLight> make_environment(const RenderCommandOptions& o
 // Command-line depth of field settings override the file's; focusing on a pixel needs
 // the accelerator, so this runs after it is built.
 void apply_lens_options(const RenderCommandOptions& o, const std::string& path, int width,
-                        int height, const Accel& accel, CameraDesc& cam) {
+                        int height, const Scene& scene, const Accel& accel, CameraDesc& cam) {
     if (o.aperture_blades >= 0) cam.aperture_blades = o.aperture_blades;
     if (o.aperture_radius >= 0) cam.aperture_radius = o.aperture_radius;
     if (o.fstop > 0) cam.aperture_radius = aperture_radius_from_fstop(o.fstop, cam.yfov,
@@ -216,7 +216,7 @@ void apply_lens_options(const RenderCommandOptions& o, const std::string& path, 
     if (o.focus_distance > 0) cam.focus_distance = o.focus_distance;
     if (o.focus_on.size() == 2) {
         const std::optional<float> d =
-            focus_distance_at(cam, width, height, o.focus_on[0], o.focus_on[1], accel);
+            focus_distance_at(cam, width, height, o.focus_on[0], o.focus_on[1], scene, accel);
         if (!d)
             throw SceneError(path + ": --focus-on " + std::to_string(o.focus_on[0]) + " " +
                              std::to_string(o.focus_on[1]) + ": no surface behind that pixel");
@@ -366,7 +366,7 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
                   format_bytes(peak_memory_bytes()).c_str());
     LOG_INFO(path << ": load and build: " << line);
 
-    apply_lens_options(o, path, s->width, s->height, *s->accel, s->camera_desc);
+    apply_lens_options(o, path, s->width, s->height, scene, *s->accel, s->camera_desc);
 
     s->camera = make_camera(s->camera_desc, s->width, s->height);
     s->materials.gltf_distribution =

@@ -89,11 +89,13 @@ test::Estimate floor_radiance(const Setup& s, const Config& c, uint64_t n) {
     });
 }
 
-// The emitter's face seen from `eye` straight along Y (through its centre).
+// The emitter's face seen from `eye` straight along Y (through its centre), by a ray that
+// meets its back as a bounce does (camera rays pass through it: CameraCullingRender).
 float seen_emitter(const Setup& s, const std::string& integrator, float eye_y) {
     const auto integ = make_integrator(integrator, {});
     auto sampler = make_sampler(SamplerType::Independent, 1, 5);
-    const RenderContext ctx{s.scene, *s.accel, *s.lights};
+    RenderContext ctx{s.scene, *s.accel, *s.lights};
+    ctx.camera_culling = false;
     sampler->start_pixel_sample({0, 0}, 0);
     Ray r;
     r.o = {0.01f, eye_y, 0.02f};
