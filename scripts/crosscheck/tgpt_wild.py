@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """penumbra against three-gpu-pathtracer (../shared/tools/tgpt) on real glTF files.
 
 Both render every model under a uniform white environment of radiance 1, the only light,
@@ -51,7 +51,8 @@ def render_penumbra(exe, name, path, a):
 
 
 def compare(tgpt, a_exr, b_exr, prefix):
-    r = subprocess.run([sys.executable, os.path.join(tgpt, "compare.py"), a_exr, b_exr, prefix],
+    # compare.py needs numpy and OpenImageIO: Debian's python3, as tgpt's render.mjs uses.
+    r = subprocess.run(["/usr/bin/python3", os.path.join(tgpt, "compare.py"), a_exr, b_exr, prefix],
                        capture_output=True, text=True)
     text = r.stdout
     ratio = re.search(r"ratio A/B=([0-9.naninf]+)", text)
