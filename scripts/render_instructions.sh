@@ -31,8 +31,11 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 first=""
 for bin in "${binaries[@]}"; do
+    # The progress reporter inside the loop is left out: how often it prints depends on
+    # the wall clock, so on a loaded machine its instructions would vary from run to run.
     valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.out" \
-        --toggle-collect='*render_samples*' "$bin" "${args[@]}" -o "$tmp/out.exr" \
+        --toggle-collect='*render_samples*' --toggle-collect='*ProgressReporter::update*' \
+        "$bin" "${args[@]}" -o "$tmp/out.exr" \
         --threads 1 --no-preview --overwrite >"$tmp/log" 2>&1 ||
         { cat "$tmp/log" >&2; exit 1; }
     n=$(sed -n 's/.*Collected : \([0-9]*\).*/\1/p' "$tmp/log")

@@ -48,9 +48,11 @@ def clip_files(path, out_dir):
         uri = item.get("uri")
         if uri and not uri.startswith("data:") and "://" not in uri:
             item["uri"] = os.path.relpath(os.path.join(src_dir, uri), out_dir)
-    # Every material white and opaque, vertex colours dropped: penumbra's albedo AOV (a miss
-    # counting as zero) is then its coverage.
-    doc["materials"] = [{"name": m.get("name", ""), "doubleSided": m.get("doubleSided", False),
+    # Every material white, opaque and double-sided, vertex colours dropped: penumbra's
+    # albedo AOV (a miss counting as zero) is then its coverage. Double-sided because
+    # penumbra's camera rays cull single-sided back faces (seen through an open tube's
+    # end) and Cycles draws them: the silhouette compares poses, not culling.
+    doc["materials"] = [{"name": m.get("name", ""), "doubleSided": True,
                          "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 1]}}
                         for m in doc.get("materials", [])]
     for mesh in doc.get("meshes", []):
