@@ -92,7 +92,7 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
 }
 
 // The light-sampling estimate for one point u on an already chosen light. Inlined into
-// sample_one_light and sample_light_stratified: a call passing its eleven arguments cost
+// sample_one_light and sample_light_stratified: a call passing its eleven arguments costs
 // about 30 instructions a vertex.
 [[gnu::always_inline]] inline Spectrum sample_chosen_light(
     const RenderContext& ctx, const RayOrigins& origins, const ShadingData& sd, Vec3 wo, float time,
