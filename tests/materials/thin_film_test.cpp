@@ -152,7 +152,7 @@ TEST(MetalRoughIridescence, NoFilmIsTodaysBsdf) {
 
 TEST(MetalRoughIridescence, FilmChangesTheColour) {
     // A sanity check that the film is wired in: at 400 nm over a dielectric the normal
-    // reflection is no longer grey (the plain f0 is 0.04 in every channel).
+    // reflection is not grey (the plain f0 is 0.04 in every channel).
     const MetalRoughBsdf bsdf(film_params(0, 0, 1, 400));
     const auto s = bsdf.sample(Vec3(0, 0, 1), 0, {0.5f, 0.5f}, Transport::Radiance);
     ASSERT_TRUE(s && s->is_specular());
