@@ -131,7 +131,7 @@ inline Ray spawn_ray_from(Vec3 o, Vec3 w, float dist, Vec3 target, float time) {
         // A shadow ray to a point: aimed from the moved origin at the point itself
         // (pbrt-v4's SpawnRayTo). Kept parallel to w, a lifted origin would carry the
         // segment's end past the point, into the area light sampled there, which then
-        // blocks its own light (a smooth sphere under a panel lost 60% of its direct light).
+        // blocks its own light (a smooth sphere under a panel loses 60% of its direct light).
         const Vec3 to = target - r.o;
         const float len = length(to);
         r.d = len > 0 ? to / len : w;
