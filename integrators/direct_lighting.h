@@ -137,7 +137,7 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
 // allows it, the point's first coordinate chooses the light too (rescaled, as Cycles
 // does): the points on an emitter made of several triangles (the Cornell box's
 // two-triangle panel) then stay stratified over all of it, not over each triangle apart;
-// direct light's relMSE there fell 30% at 64 spp (docs/performance.md). The choice is
+// direct light's relMSE there falls 30% at 64 spp (docs/performance.md). The choice is
 // drawn in every case, so that the sampler's dimensions do not depend on the light
 // sampler (deferred: a remapping choice does not read it).
 struct LightDraws {
