@@ -223,7 +223,8 @@ float MetalRoughBsdf::film_average_albedo() const {
 
 float MetalRoughBsdf::base_transmittance(Vec3 w) const {
     if (!(m_aniso | m_film)) {
-        // Today's isotropic layer, kept apart so that it costs what it did.
+        // The isotropic layer without a film, kept apart so that anisotropy and films add
+        // nothing to its cost.
         if (m_p.layering == GltfLayering::Spec || m_delta)
             return schlick_transmittance(m_f0_max, m_p.dielectric_f90, w.z);
         const Vec2 ab = m_albedo.at(w.z);

@@ -1,6 +1,6 @@
 // KHR_materials_iridescence: the thin film's reflectance (materials/thin_film.h) against
 // an independent spectral integration of the exact Airy sum, its limits, and the film in
-// the glTF BRDF (materials/metal_rough_bsdf.h): no film is today's BSDF, sampling,
+// the glTF BRDF (materials/metal_rough_bsdf.h): no film is the film-less BSDF, sampling,
 // agreement, reciprocity and the white furnace.
 #include "materials/thin_film.h"
 
