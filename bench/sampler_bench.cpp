@@ -1,6 +1,6 @@
 // Per-sample costs of the render loop's small pieces: the pixel samplers (per
 // dimension), the specular albedo lookup and the pixel filters. Figures and commands:
-// docs/performance.md (issue 14).
+// docs/performance.md.
 #include <benchmark/benchmark.h>
 
 #include <memory>

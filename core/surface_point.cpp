@@ -256,7 +256,7 @@ Vec3 smooth_surface_point(Vec3 p, const Vec3 v[3], const Vec3 n[3], const float 
 
 Vec3 offset_ray_origin(Vec3 p, Vec3 ng, Vec3 w) {
     // A relative offset (a few float ULPs of the largest coordinate) plus an absolute
-    // floor for points near the origin. Issue "numerical robustness" refines this.
+    // floor for points near the origin.
     const float scale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1e-2f});
     const float eps = 32.0f * std::numeric_limits<float>::epsilon() * scale;
     return p + (dot(w, ng) < 0 ? -ng : ng) * eps;

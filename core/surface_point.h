@@ -119,8 +119,8 @@ private:
 
 // A ray from origin o (ray_origin's for the side w leaves the surface on) along unit w; where
 // dist is finite, towards `target` (the point at distance dist along w), stopping short
-// of it. Inline, as offset_ray_origin: the caller reads the ray at once, and a ray
-// returned through memory stalled on store forwarding (a 16-byte load of 4-byte stores).
+// of it. Inline, as offset_ray_origin: the caller reads the ray at once, and inline it stays
+// in registers instead of being read back from memory with 16-byte loads of 4-byte stores.
 inline Ray spawn_ray_from(Vec3 o, Vec3 w, float dist, Vec3 target, float time) {
     Ray r;
     r.o = o;
@@ -131,7 +131,7 @@ inline Ray spawn_ray_from(Vec3 o, Vec3 w, float dist, Vec3 target, float time) {
         // A shadow ray to a point: aimed from the moved origin at the point itself
         // (pbrt-v4's SpawnRayTo). Kept parallel to w, a lifted origin would carry the
         // segment's end past the point, into the area light sampled there, which then
-        // blocks its own light (a smooth sphere under a panel lost 60% of its direct light).
+        // blocks its own light (a smooth sphere under a panel loses 60% of its direct light).
         const Vec3 to = target - r.o;
         const float len = length(to);
         r.d = len > 0 ? to / len : w;
@@ -156,8 +156,8 @@ inline Ray spawn_ray_to(const RayOrigins& origins, Vec3 w, float dist, Vec3 targ
 
 // A path's ray turned into its continuation from the vertex along unit w: spawn_ray with
 // an infinite distance, its time and cone left as they are. Written field by field into
-// the ray: `ray = spawn_ray(...)` built a temporary and copied it over with 16-byte loads
-// of its 4- and 8-byte stores, two store-forwarding stalls at every bounce.
+// the ray: `ray = spawn_ray(...)` builds a temporary and copies it over with 16-byte loads
+// of its 4- and 8-byte stores, which wait for those stores at every bounce.
 inline void continue_ray(Ray& ray, const RayOrigins& origins, Vec3 w) {
     ray.o = origins.for_direction(w);
     ray.d = w;

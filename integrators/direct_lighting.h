@@ -51,7 +51,7 @@ inline float bump_shadowing(const ShadingData& sd, Vec3 wi) {
 // f = bsdf.eval(wo, wi) (local; wi_world the same direction in world space) with
 // bump_shadowing on its diffuse lobes only (Bsdf::eval_diffuse), as Cycles applies it to
 // diffuse closures only. The term fades diffuse light smoothly at a normal-mapped
-// terminator; on a glossy or mirror lobe it took most of every reflection a steep bump
+// terminator; on a glossy or mirror lobe it would take most of every reflection a steep bump
 // turns towards the horizon (under a white sky, a black ring around each bump of a
 // mirror-smooth normal map), light that the neighbouring bumps pass on, not block.
 inline Spectrum bump_shadowed(const ShadingData& sd, const Bsdf& bsdf, Vec3 wo, Vec3 wi,
@@ -86,13 +86,13 @@ float shadow_transmittance_through(const RenderContext& ctx, const Ray& shadow);
 // surfaces it crosses. Inline: without partial coverage it is one occlusion query, and
 // every light sample asks it.
 inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
-    // By reference: a copy of the ray spawn_ray just wrote stalls on store forwarding.
+    // By reference: a copy of the ray spawn_ray just wrote would wait for its stores.
     if (!ctx.has_alpha) return ctx.accel.occluded(shadow) ? 0.0f : 1.0f;
     return shadow_transmittance_through(ctx, shadow);
 }
 
 // The light-sampling estimate for one point u on an already chosen light. Inlined into
-// sample_one_light and sample_light_stratified: a call passing its eleven arguments cost
+// sample_one_light and sample_light_stratified: a call passing its eleven arguments costs
 // about 30 instructions a vertex.
 [[gnu::always_inline]] inline Spectrum sample_chosen_light(
     const RenderContext& ctx, const RayOrigins& origins, const ShadingData& sd, Vec3 wo, float time,
@@ -137,7 +137,7 @@ inline float shadow_transmittance(const RenderContext& ctx, const Ray& shadow) {
 // allows it, the point's first coordinate chooses the light too (rescaled, as Cycles
 // does): the points on an emitter made of several triangles (the Cornell box's
 // two-triangle panel) then stay stratified over all of it, not over each triangle apart;
-// direct light's relMSE there fell 30% at 64 spp (docs/performance.md). The choice is
+// direct light's relMSE there falls 30% at 64 spp (docs/performance.md). The choice is
 // drawn in every case, so that the sampler's dimensions do not depend on the light
 // sampler (deferred: a remapping choice does not read it).
 struct LightDraws {
@@ -166,8 +166,7 @@ inline LightDraws draw_light(PathSampler& sampler) {
     float light_samples = 1, float bsdf_samples = 1, const SideMedia& media = {}) {
     const SurfacePoint& sp = origins.point();
     // The remapped coordinate goes to its own float: written through a pointer into u
-    // and read back as the whole Vec2, it stalled on store forwarding (a third of this
-    // function's time in the profile).
+    // and read back as the whole Vec2, it would make an 8-byte load wait for a 4-byte store.
     float u_x = u.u.x;
     const std::optional<SampledLight> chosen =
         ctx.lights.remaps_choice()

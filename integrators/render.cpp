@@ -88,9 +88,9 @@ bool render_samples(const RenderContext& ctx, const Camera& camera, const Integr
         };
         // Sample s of pixel (x, y): its camera ray, constructed at `ray` (an existing Ray,
         // whose storage it reuses), the sampler left after the camera's dimensions for the
-        // integrator. In place: a ray assigned from the returned one was copied with
-        // 16-byte loads of the camera's narrower stores just made, a store-forwarding
-        // stall at every sample (a quarter of this loop's own time in the profile).
+        // integrator. In place: a ray assigned from a returned one is copied with 16-byte
+        // loads of the camera's narrower stores just made, which wait for those stores at
+        // every sample.
         auto camera_ray = [&](int x, int y, uint32_t s, Sampler& sampler, FilterSample& fs,
                               Ray* ray) {
             sampler.start_pixel_sample({x, y}, halves ? s >> 1 : s);

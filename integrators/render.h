@@ -29,8 +29,8 @@ struct RenderOptions {
     std::string filter = "gaussian";
     bool progress = true;
     std::string label = "render";
-    // Scene time in seconds (frame / fps) for animated scenes. Nothing evaluates
-    // animation yet: the loader will read it; for now every frame shows the same scene.
+    // Scene time in seconds of the shutter's opening, for the record: the loader has
+    // already posed the scene at it (io/gltf_loader.h), and the render loop does not read it.
     double time = 0;
     // Seconds for the whole image, 0: none. No pass starts that is predicted to end
     // after it; the first pass (1 spp) always runs.

@@ -33,7 +33,7 @@ struct GltfLoadOptions {
     uint64_t max_texture_pixels = kDefaultMaxTexturePixels;
 };
 
-// Where load_gltf's time went, for big scenes (docs/performance.md, "Big scenes"): wall
+// Where load_gltf's time goes, for big scenes (docs/performance.md, "Big scenes"): wall
 // seconds, and CPU seconds of the whole process (all threads), which a busy machine
 // inflates less.
 struct GltfLoadStats {

@@ -37,13 +37,13 @@ public:
     }
     // The model that proto holds, referred to where it is, not copied: the models keep
     // no state between calls (MetalRoughBsdf's last wo's terms are per thread), so one
-    // serves every thread's hits. A copy per hit moved a few hundred bytes.
+    // serves every thread's hits. A copy per hit would move a few hundred bytes.
     void use(const BsdfStorage& proto) {
         m_v = std::monostate{};
         m_bsdf = proto.get();
     }
     // Constructs the model in place from its constructor's arguments: a model built
-    // first and then copied in moved its few hundred bytes twice per hit.
+    // first and then copied in would move its few hundred bytes twice per hit.
     template <typename T, typename... Args>
     void emplace(Args&&... args) {
         m_bsdf = &m_v.template emplace<T>(std::forward<Args>(args)...);

@@ -23,7 +23,7 @@ uint64_t new_model_id() {
 
 // Both alphas of the lobe: KHR_materials_anisotropy stretches it along x. Anisotropic
 // lobes are GGX even under --microfacet beckmann: Beckmann's albedo table over four
-// coordinates took 45 s to integrate (its visible normals invert erf numerically), and the
+// coordinates takes 45 s to integrate (its visible normals invert erf numerically), and the
 // switch exists to compare isotropic lobes.
 MicrofacetDistribution make_distribution(const MetalRoughParams& p) {
     if (!(p.anisotropy > 0)) return {p.distribution, p.alpha};
@@ -112,7 +112,7 @@ MetalRoughBsdf::MetalRoughBsdf(const MetalRoughParams& p)
         m_f0_max = m_film_bound[0];
     }
     // KHR_materials_specular's factor 0 on a dielectric leaves no layer at all: the
-    // Lambertian base, without Fresnel, table lookups or a lobe choice (issue 14).
+    // Lambertian base, without Fresnel, table lookups or a lobe choice.
     m_lambert = !m_film && !(m_p.metallic > 0) && !(m_f0_max > 0) && !(m_p.dielectric_f90 > 0);
     if (m_lambert) return;
     if (m_p.layering != GltfLayering::AlbedoScaled || m_p.metallic >= 1) return;
@@ -223,7 +223,8 @@ float MetalRoughBsdf::film_average_albedo() const {
 
 float MetalRoughBsdf::base_transmittance(Vec3 w) const {
     if (!(m_aniso | m_film)) {
-        // Today's isotropic layer, kept apart so that it costs what it did.
+        // The isotropic layer without a film, kept apart so that anisotropy and films add
+        // nothing to its cost.
         if (m_p.layering == GltfLayering::Spec || m_delta)
             return schlick_transmittance(m_f0_max, m_p.dielectric_f90, w.z);
         const Vec2 ab = m_albedo.at(w.z);

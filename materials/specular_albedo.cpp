@@ -48,8 +48,8 @@ constexpr ColumnGuide kColumnGuide = make_column_guide();
 }  // namespace
 
 // From the guide table, then exact comparisons with the columns, so the result is what floor() of
-// the exact cube root would give. A cube root here was 9% of the issue's profile, and the bit-level
-// guess with a Newton step that replaced it still cost a division.
+// the exact cube root would give, without the cost of a cube root, or of the division in a
+// bit-level guess with a Newton step, at every lookup.
 int specular_albedo_column_below(float mu) {
     if (!(mu > 0)) return 0;
     int i = kColumnGuide.first[std::min(static_cast<int>(mu * kGuide), kGuide - 1)];
@@ -62,10 +62,9 @@ SpecularAlbedo::SpecularAlbedo(MicrofacetType type, float alpha) {
         std::sqrt(std::sqrt(std::clamp(alpha, 0.0f, 1.0f))) * (SpecularAlbedoTable::R - 1);
     m_row = std::min(static_cast<int>(t), SpecularAlbedoTable::R - 2);
     m_frac = t - m_row;
-    // Integrated when penumbra was built (specular_albedo_generator.cpp): nothing to
-    // compute at start-up or on first use (issue 14 measured 5% of a short render's
-    // profile for building it at start-up, and lazily by row it still cost FlightHelmet,
-    // whose textures use every roughness, 0.1 s of CPU).
+    // Integrated when penumbra is built (specular_albedo_generator.cpp): nothing to
+    // compute at start-up or on first use, which saves about 5% of a short render, and
+    // 0.1 s of CPU on a scene whose textures use every roughness (FlightHelmet).
     m_table = type == MicrofacetType::Beckmann ? &kSpecularAlbedoBeckmann : &kSpecularAlbedoGgx;
     const float* p0 = m_table->average[m_row];
     const float* p1 = m_table->average[m_row + 1];

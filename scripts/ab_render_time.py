@@ -2,16 +2,16 @@
 """Render time of two penumbra binaries, side by side: each round runs A and B at the same
 time, one thread each, pinned to different cores (taskset), and swaps the cores the next
 round. Both then see the same machine: a VM's slow spells last seconds to minutes, and
-runs one after the other did not resolve 2% through them (docs/performance.md,
+runs one after the other do not resolve 2% through them (docs/performance.md,
 "How to measure"). Prints each round's render seconds and B / A, then the median ratio, and
 the median over pairs of rounds of their geometric mean: a pair has run each binary on each
 core, so a core that is slower than the other (35% for minutes, on this VM) cancels.
 
 --sequential runs A and B one after the other on core 1, the other core idle, the first
 of each round alternating (AB, BA, ...). Side by side, the two processes share the VM's
-slow spells; on one spell (docs/performance.md, "How to measure") they also showed two
-binaries 3% apart that one after the other, and side by side an hour later, were equal.
-Confirm a gain under 5% both ways, at different times, before believing it.
+slow spells, and a spell can still show two equal binaries 3% apart either way
+(docs/performance.md, "How to measure"). Confirm a gain under 5% both ways, at different
+times, before believing it.
 
   python3 scripts/ab_render_time.py OLD/penumbra build/bin/penumbra --rounds 8 -- \\
       render scenes/glossy.gltf --width 128 --spp 128 --filter box

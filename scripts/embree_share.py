@@ -1,19 +1,19 @@
 #!/usr/bin/env python3
 """Embree's share of a render's time: `perf record` samples in libembree3 over those in
-libembree3 and penumbra (issue 14's "share of time inside Embree", whose goal is 50%),
+libembree3 and penumbra (the goal for the "share of time inside Embree" is 50%),
 for one or more binaries, run in turn round after round so that each sees the same spells
 of a shared machine. Prints each run's sample counts and share, then per binary the
 median share and its range, the median counts, and libembree3's share of the whole
 process (start-up included: the dynamic loader and the kernel take about 5%).
 
 The share moves by about two points from run to run and from day to day on this VM, and
-it barely follows penumbra's own instruction count: when ours fell 7%, Embree's samples
-fell 7% with them (docs/performance.md, "Embree's share"). Compare binaries in one
+it barely follows penumbra's own instruction count: when ours falls, Embree's samples
+fall about as much (docs/performance.md, "Embree's share"). Compare binaries in one
 invocation, and quote medians of several rounds.
 
   python3 scripts/embree_share.py /tmp/old/penumbra build/bin/penumbra --rounds 8
 
-The default render is the issue's profile: the point-light Cornell box, 256 px, 32 spp,
+The default render: the point-light Cornell box, 256 px, 32 spp,
 box filter, 8 segments, one thread, pinned to one core (--core; -1 leaves it unpinned).
 Arguments after `--` replace it (keep --threads 1); scene paths are relative to the
 repository root. Needs linux-perf (scripts/setup.sh --test installs it) and permission

@@ -8,7 +8,7 @@ brings in; most are built with BIND_NOW, so all of them are bound before main. l
 each one up library by library, in load order (breadth first from the executable), and
 four fifths of them are a library's references to its own C++ symbols (libopenvdb alone
 has 57,000), found only when the search reaches that library: position 34 for libopenvdb,
-199 for libxerces-c, 256 for libgeos. That search was 65% of `penumbra --version`'s
+199 for libxerces-c, 256 for libgeos. Without the list, that search is 65% of `penumbra --version`'s
 instructions (docs/performance.md, "Start-up"). Naming the heaviest of those
 libraries in the executable's own DT_NEEDED, right after the C++ and C runtimes, puts them
 near the front of the search; CMake does that from cmake/loader_order.txt.

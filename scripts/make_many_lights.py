@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes a scene lit by many small emissive triangles (default 10,000), for many-light
-sampling (a light BVH, issue 14) and the efficiency harness (scripts/crosscheck/efficiency.py).
+sampling (the light BVH) and the efficiency harness (scripts/crosscheck/efficiency.py).
 No punctual lights, no environment: all light comes from the triangles.
 
 --layout cloud (default; the harness's many-lights):
@@ -278,8 +278,8 @@ def build_dome_or_hall(count, seed, is_hall):
                                   log_level(0.1, 500, level, LEVELS), False, int_zeros=True))
         add_triangles(tris, len(materials) - 1)
     return {
-        # The generator's former name stays so that the files remain byte-identical to
-        # those docs/performance.md measured.
+        # A fixed generator string, so that the files stay byte-identical to those
+        # docs/performance.md measured.
         "asset": {"version": "2.0", "generator": "tests/scripts/make_many_emitters.py"},
         "extensionsUsed": ["KHR_materials_emissive_strength"],
         "scene": 0,

@@ -3,8 +3,8 @@
 # all it calls, Embree included), counted by valgrind's callgrind: the same count on
 # every run of an idle machine, so two builds can be compared where timing cannot
 # resolve a few percent (on a VM whose speed swings by 30% from minute to minute;
-# docs/performance.md, "How to measure"). With a build running beside it, one binary's
-# count rose 0.9%: compare on an idle machine. Fewer instructions is not always less
+# docs/performance.md, "How to measure"). A build running beside it raises the count by
+# about 1%: compare on an idle machine. Fewer instructions is not always less
 # time: confirm a cut with scripts/ab_render_time.py. Each binary takes about 15 s at
 # the default size.
 #

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Thread scaling of one render (issue 14, item 5: at least 1.9x on 2 cores for every image of
+"""Thread scaling of one render (the goal: at least 1.9x on 2 cores for every image of
 256 x 256 or more): the render's own seconds (the EXR's penumbra:render_seconds, written with
 --timing-metadata; load, BVH build and writing left out) on 1 thread and on N, the two
 alternated round by round so that both see the same spells of a shared machine.

@@ -224,7 +224,7 @@ std::string format_summary(const std::vector<JobResult>& results) {
     for (const JobResult& r : results)
         width = std::max(width, fs::path(r.scene).filename().string().size());
     // Denoised images add their estimate and the noisy image's error; without any, the
-    // table is as it was before denoising existed.
+    // table has no denoiser columns.
     const bool denoised = std::any_of(results.begin(), results.end(), [](const JobResult& r) {
         return r.denoise_relmse_estimate.has_value();
     });
@@ -237,7 +237,7 @@ std::string format_summary(const std::vector<JobResult>& results) {
         return denoised ? "  " + pad(estimate, 10) + "  " + pad(noisy, 10) : std::string();
     };
     // Images that drew a nearly-black or mostly-clipped warning: a column of their own,
-    // so that one bad image among thousands stands out; without any, as before.
+    // so that one bad image among thousands stands out; without any, no such column.
     size_t black = 0, clipped = 0;
     for (const JobResult& r : results) {
         black += r.image_warning == "nearly black";

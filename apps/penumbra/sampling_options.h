@@ -14,7 +14,7 @@ namespace penumbra {
 void add_sampling_options(CLI::App* cmd, RenderCommandOptions& o);
 
 // The header fields of the options that are on (none when all are off, so a render
-// without them writes the same header as before they existed).
+// without them writes no field for them).
 Metadata sampling_metadata(const RenderCommandOptions& o);
 
 }  // namespace penumbra

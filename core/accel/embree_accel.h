@@ -25,7 +25,7 @@ struct EmbreeBuildOptions {
     // triangles times its placements are at most flatten_triangles (and the sum of such
     // copies stays within flatten_budget), so that a ray traverses one BVH as in
     // Embree's tutorials. Larger objects keep their own BVH even when placed once: one
-    // top-level build over all of them doubled build CPU and added 24% to the peak
+    // top-level build over all of them doubles build CPU and adds 24% to the peak
     // memory of a 2M-triangle scene (docs/performance.md). false: two levels everywhere.
     bool flatten = true;
     size_t flatten_triangles = 65536;

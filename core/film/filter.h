@@ -26,8 +26,8 @@ public:
     // u in [0,1)^2, e.g. a stratified pixel sample. Each axis goes through the filter's
     // tabulated inverse CDF (unless a filter has a closed form), so the offsets' density
     // is the normalized filter, up to the table's steps, and every weight is 1 (as
-    // Cycles' filter table). Weighting by f/pdf instead, as pbrt-v4 does, evaluated the
-    // filter (an exp per axis) and searched a CDF per camera sample, 4-6% of a render
+    // Cycles' filter table). Weighting by f/pdf instead, as pbrt-v4 does, evaluates the
+    // filter (an exp per axis) and searches a CDF per camera sample, 4-6% of a render
     // (docs/performance.md); the table's density is within an L1 distance of 1.2e-4 of
     // the filter, all of it in the tails.
     virtual FilterSample sample(Vec2 u) const;

@@ -18,7 +18,7 @@ namespace penumbra {
 // allowIncompletePDF): luminance less its mean over the sphere, clamped at 0, so that no
 // light sample goes to texels dimmer than the mean. BSDF sampling finds those as well
 // as light sampling did, and MIS then gives it their whole weight: with the sun-lit sky
-// of the efficiency harness, FlightHelmet's relMSE fell to 0.66x at equal samples
+// of the efficiency harness, FlightHelmet's relMSE falls to 0.66x at equal samples
 // (docs/performance.md). Only for integrators whose every light sample is MIS-weighted
 // against a BSDF sample (Integrator::pairs_light_and_bsdf_samples): a light sample
 // alone would never see those texels. A map that is constant gives no compensated

@@ -18,9 +18,8 @@ struct ShadingPoint {
 };
 
 // Fields in this order so that the two 16-byte stores a light writes the record with
-// (wi + dist, Li + pdf) each hold whole fields: laid out Li, wi, the 8-byte read of
-// wi.xy straddled two stores and stalled on store forwarding (10% of
-// sample_chosen_light's samples in perf annotate).
+// (wi + dist, Li + pdf) each hold whole fields, and a later 8-byte read of wi.xy comes from
+// one store instead of waiting for two to reach memory.
 struct LightSample {
     Vec3 wi;           // unit direction from the receiver towards the light
     float dist = 0;    // distance to the light sample (infinity for directional)

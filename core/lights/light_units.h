@@ -9,7 +9,7 @@ namespace penumbra {
 
 enum class LightUnits {
     Photometric,  // cd -> W/sr and lux -> W/m^2, divided by 683 lm/W (glTF's units)
-    Radiometric,  // the number is already W/sr or W/m^2 (penumbra's old reading)
+    Radiometric,  // the number is already W/sr or W/m^2
 };
 
 // The luminous efficacy at 555 nm, which defines the candela (SI, 1979) and which

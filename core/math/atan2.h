@@ -1,6 +1,6 @@
 // atan2 for float, inline, its octants by selects: the environment light maps every
-// direction it is asked about to its image with two of them, and libm's atan2f (a call,
-// with branches on the octant) was 7% of a 1-thread profile of FlightHelmet under a sky
+// direction it is asked about to its image with two of them, and libm's atan2f is a call
+// that branches on the octant; inline, it saves that call and its mispredicted branches
 // (docs/performance.md, "Shapes of the hot path"). Also the same on every x86 machine, where
 // glibc picks among its own variants by the CPU's features.
 #pragma once

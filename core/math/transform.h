@@ -55,10 +55,9 @@ public:
     // identity): they are on the path of every hit. The shortcut gives the general
     // formula's values, whose 0 * x and 1 * x terms are exact in IEEE arithmetic
     // (except that the sign of a zero coordinate may differ).
-    // The general case inline too: as a call, GCC packed p.x and p.y into one register
-    // through the stack at every call site, even on the translation path, and that
-    // 8-byte load of two 4-byte stores stalled on store forwarding (1.2% of the
-    // Lambertian Cornell box's profile, in make_surface_point).
+    // The general case inline too: as a call, GCC packs p.x and p.y into one register
+    // through the stack at every call site, even on the translation path, and an 8-byte
+    // load of two 4-byte stores waits for both to reach memory; inline, p stays in registers.
     Vec3 point(Vec3 p) const {
         const auto& m = m_m.m;
         if (m_translation_only) return {p.x + m[0][3], p.y + m[1][3], p.z + m[2][3]};

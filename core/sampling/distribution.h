@@ -28,8 +28,8 @@ private:
     // Guide table (Chen & Asau 1974): m_guide[j] is the bin that upper_bound finds for
     // u = j / G, G a power of two, so a u in [j / G, (j + 1) / G) starts its search
     // there and walks on, on average n / G CDF entries, instead of a binary search over
-    // all of them (log2 n dependent, mispredicted branches: 4% of the helmet scene's
-    // profile). The result is upper_bound's, exactly.
+    // all of them (log2 n dependent, often mispredicted branches at every
+    // sample). The result is upper_bound's, exactly.
     std::vector<uint32_t> m_guide;
     float m_guide_scale = 0;  // G
     float m_integral = 0;

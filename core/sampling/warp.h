@@ -78,13 +78,12 @@ inline float uniform_hemisphere_pdf(Vec3 w) { return w.z >= 0 ? kInv2Pi : 0.0f; 
 
 // Cosine-weighted hemisphere (Malley's method on the concentric disk). Inline: the
 // path loop samples it at every diffuse bounce, and as a call its Vec2 argument and Vec3
-// result were packed into and out of registers around a chain of a division, a
+// result are packed into and out of registers around a chain of a division, a
 // polynomial and a square root.
 inline Vec3 square_to_cosine_hemisphere(Vec2 u) {
     // z = sqrt(1 - r^2) from the disk radius runs beside the angle's division and
-    // polynomial; from the point's x and y it waited for them (4.7% of the point-light
-    // Cornell box's profile, 3.3% this way). (1 - r)(1 + r) keeps 1 - r^2 accurate near
-    // the rim.
+    // polynomial, where from the point's x and y it would wait for them.
+    // (1 - r)(1 + r) keeps 1 - r^2 accurate near the rim.
     float r;
     const Vec2 d = warp_detail::concentric_disk(u, &r);
     const float z = std::sqrt(std::max(0.0f, (1 - r) * (1 + r)));

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Equal-error efficiency of penumbra against Blender's Cycles (issue 14): each renderer
+"""Equal-error efficiency of penumbra against Blender's Cycles: each renderer
 renders each scene at several spp, its relMSE is measured against its own converged image
 (so model differences between the two do not count as error), and the table gives
 1 / (relMSE x render seconds) per renderer and the ratio penumbra / Cycles.
@@ -73,7 +73,7 @@ def parse_args(argv):
                     help="also the equal-spp comparison with Embree's pathtracer tutorial")
     ap.add_argument("--embree-only", action="store_true",
                     help="only that comparison (its own fixed scene, size and spp: the "
-                         "issue's 256 px, 64 spp), none of the efficiency scenes")
+                         "256 px, 64 spp), none of the efficiency scenes")
     args = ap.parse_args(argv)
     if args.quick:
         given = " ".join(argv)

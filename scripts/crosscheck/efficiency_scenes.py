@@ -2,7 +2,7 @@
 each is, how penumbra lights it and how Cycles builds its materials and world.
 
 - cornell: scenes/cornell-box.gltf with the mirror sphere made Lambertian (albedo 0.75), so
-  the whole box is Lambertian under its area light (issue 14's equal-error scene); Cycles
+  the whole box is Lambertian under its area light (the equal-error scene); Cycles
   gets exact Diffuse/Emission nodes (cycles_render.py's rebuild).
 - helmet: ../shared/scenes/wild/FlightHelmet (Khronos sample, 5 textured materials with
   normal maps) under an equirectangular sky with a sun (sky_map()); Cycles through the

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes Embree's own tutorial scene as glTF, so that penumbra and Embree 3's `pathtracer`
-tutorial can be timed on the same geometry, materials and light (issue 14's equal-spp
-goal): the OBJ that /usr/share/doc/embree3/models/cornell_box.ecs names (Debian's
+tutorial can be timed on the same geometry, materials and light (the equal-spp
+comparison): the OBJ that /usr/share/doc/embree3/models/cornell_box.ecs names (Debian's
 embree-tools), its point light and its camera.
 
   python3 scripts/crosscheck/embree_cornell.py /tmp/embree-cornell.gltf

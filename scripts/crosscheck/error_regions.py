@@ -12,9 +12,9 @@ relMSE is not corrected for the reference's own error, as efficiency.py's is (it
 share" column says how much that is). Prints, per block of --block pixels, penumbra's
 relMSE over Cycles' and
 each block's share of each renderer's whole relMSE; with --out, writes OUT-penumbra.png
-and OUT-cycles.png, maps of sqrt(relMSE) on one scale (white: --map-max). This is how the
-twelfth session found FlightHelmet's lenses holding 58% of penumbra's error
-(docs/performance.md). Standard library only, as efficiency.py.
+and OUT-cycles.png, maps of sqrt(relMSE) on one scale (white: --map-max). On FlightHelmet
+they show the lenses holding 58% of penumbra's error (docs/performance.md). Standard
+library only, as efficiency.py.
 """
 import argparse
 import glob

@@ -104,7 +104,7 @@ TEST(DenoiseQualityLong, OnBundledScenes) {
         // No harm where there is nothing to gain: denoising a converging render changes it
         // by less than its own noise, and the firefly guard holds back at most 0.1% of its
         // energy (the bias it adds to the converged mean; measured: nothing on any of the
-        // four, whose caustics are no longer lone samples at 1024 spp).
+        // four, whose caustics are not lone samples at 1024 spp).
         EXPECT_LT(relative_mse(layer(p1, ""), r1), render_noise);
         EXPECT_LE(header_value(out_path(name + "_ref1"), "penumbra:denoise_firefly_energy"), 1e-3);
 

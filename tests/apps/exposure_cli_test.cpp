@@ -264,7 +264,7 @@ TEST(ExposureCli, ABatchTableFlagsNearlyBlackImages) {
                     "2 images: 2 ok, 0 partial, 0 failed, 0 skipped; 1 nearly black, 0 "
                     "mostly clipped"))
         << r.output;
-    // Without flagged images the table is as before: no image column, no count.
+    // Without flagged images the table has no image column and no count.
     const test::CliResult ok = test::run_penumbra(
         {"render", lit, "--out-dir", dir.file("out2"), "--name", "{scene}_{index}.exr", "--frames",
          "0-1", "--spp", "1", "--width", "16", "--no-preview"});

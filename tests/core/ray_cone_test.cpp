@@ -52,7 +52,7 @@ TEST(RayCone, FootprintAtAHit) {
     const Scene big = quad_scene(Transform::scale({2, 2, 1}));
     r.d = {0, 0, -1};
     EXPECT_NEAR(hit_quad(big, r, 5).uv_width[0], 0.052f * 0.25f, 1e-6f);
-    // No cone, no footprint: lookups read the finest level, as before.
+    // No cone, no footprint: lookups read the finest level.
     r.cone = {};
     EXPECT_EQ(hit_quad(s, r, 5).uv_width[0], 0);
 }

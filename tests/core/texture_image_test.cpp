@@ -230,7 +230,7 @@ TEST(TextureImage, SixteenBitPrecisionKept) {
 }
 
 // The store's bytes, pyramid included: RGBA8 4 x 4/3 (5.33 per texel), RGB8 4,
-// gray 1.33; at most the 6 bytes a texel for 8-bit images.
+// gray 1.33; at most 6 bytes a texel for 8-bit images.
 TEST(TextureImage, BytesPerTexelWithThePyramid) {
     const int n = 1024;
     const TextureImage rgba(n, n, 4, TexelFormat::U8, true);

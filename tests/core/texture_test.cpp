@@ -31,7 +31,7 @@ TEST(Texture, LevelOfDetailFromTheFootprint) {
     EXPECT_FLOAT_EQ(texture_lod(t, 4.0f / 8), 2);
 }
 
-// Width 0 is a point: bilinear at level 0, as the lookup was before footprints.
+// Width 0 is a point: bilinear at level 0, the lookup without a footprint.
 TEST(Texture, ZeroWidthIsBilinearAtLevelZero) {
     const TextureImage t = ramp();
     const Texture tex;

@@ -175,9 +175,9 @@ TEST(AlphaCoverage, CameraPathsShadeTheCoveredShareInEverySample) {
 // A square emitter of radiance 2 facing a Lambertian floor from height 1, of coverage
 // 0.4 itself or opaque behind a sheet of coverage 0.6 at height 0.5: the floor under its
 // centre sees 0.4 of the analytic irradiance, whether light sampling finds the emitter,
-// BSDF sampling, or both under MIS. (Light sampling counted an emitter's whole radiance
-// before, so MIS gave between 0.4 and 1 of it; the direct integrator's BSDF samples
-// stopped at the sheet, so it gave less than 0.4.)
+// BSDF sampling, or both under MIS. (Light sampling that counts an emitter's whole
+// radiance makes MIS give between 0.4 and 1 of it; BSDF samples of the direct integrator
+// that stop at the sheet make it give less than 0.4.)
 TEST(AlphaCoverage, EmittersLightByTheirCoverage) {
     const float albedo = 0.5f, emission = 2;
     for (const bool sheet : {false, true}) {

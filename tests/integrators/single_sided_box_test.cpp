@@ -134,7 +134,7 @@ TEST(SingleSidedBoxLong, RadianceInsideIsEmissionOverOneMinusAlbedo) {
                             "closed box, MIS");
 }
 
-// Measured with two-sided emission instead (the old behaviour): 2.0873 +- 0.0005,
+// Measured with two-sided emission instead: 2.0873 +- 0.0005,
 // z = +186. The standard deviation per sample is about 0.83: 20M samples.
 TEST(SingleSidedBoxLong, BackFacesOfAnEmitterInsideEmitNothing) {
     expect_closed_box_value(measure(*make_box(true), LightStrategy::Mis, kEye, 20000000),

@@ -1,7 +1,7 @@
 // Texture filtering through the renderer: camera rays carry a ray cone, hits turn it
 // into a footprint, materials read the texture over it. A distant checkerboard then
 // renders at its mean with little noise at 4 spp, where finest-level lookups (a
-// sampler without mipmaps, as every lookup was before) leave each sample black or white.
+// sampler without mipmaps) leave each sample black or white.
 #include <gtest/gtest.h>
 
 #include <cstring>

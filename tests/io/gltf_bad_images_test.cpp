@@ -194,8 +194,8 @@ TEST(GltfBadImages, PixelLimitIsAWarningNamingTheLimit) {
     EXPECT_TRUE(s.materials.at(1).base_color_texture.valid());  // 1x1
 }
 
-// The fuzzer's find (../shared/scenes/fuzz-found/README.md): a broken GIF in a .glb's
-// buffer that OIIO's GIF reader threw std::length_error on. It is now refused by its
+// A fuzzed file (../shared/scenes/fuzz-found/README.md): a broken GIF in a .glb's
+// buffer that OIIO's GIF reader throws std::length_error on. It is refused by its
 // bytes, with the file and image named. The mutation also broke an animation's key
 // times, which is an error naming its element, after the image's warning.
 TEST(GltfBadImages, FuzzFoundFilesLoadWithClearMessages) {

@@ -65,7 +65,7 @@ std::vector<uint8_t> png_of(const ScratchDir& dir, int w, int h, int c, const st
 
 // 8-bit files stay 8-bit, their colour codes as written whatever the alpha (glTF alpha is
 // straight: OIIO must not premultiply); their sRGB lookup through the table equals the float path
-// (OCIO's decode at load, as before) at texel centres, and bilinear lookups between
+// (OCIO's decode at load) at texel centres, and bilinear lookups between
 // them agree to float rounding, far inside one 8-bit step.
 TEST(ImageReader, EightBitTexturesMatchTheFloatPath) {
     ScratchDir dir;

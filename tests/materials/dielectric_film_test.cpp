@@ -1,7 +1,7 @@
 // KHR_materials_iridescence on the transmission models (DielectricBsdf, the closed
 // volume's boundary, and ThinDielectricBsdf, the thin-walled sheet): the film's Fresnel
 // F splits reflection (F) from transmission (1 - F) per channel, so that a film that
-// absorbs nothing conserves energy in every channel. No film is today's BSDF bit for
+// absorbs nothing conserves energy in every channel. No film is the film-less BSDF bit for
 // bit; sampling follows the pdf; sample, eval and pdf agree; reflection is reciprocal
 // and refraction adjoint; the white furnace is 1 where the models lose nothing to
 // masking; the glTF transmission mixture samples by its pdf with the film on both of its

@@ -1,6 +1,6 @@
 // KHR_materials_iridescence: the thin film's reflectance (materials/thin_film.h) against
 // an independent spectral integration of the exact Airy sum, its limits, and the film in
-// the glTF BRDF (materials/metal_rough_bsdf.h): no film is today's BSDF, sampling,
+// the glTF BRDF (materials/metal_rough_bsdf.h): no film is the film-less BSDF, sampling,
 // agreement, reciprocity and the white furnace.
 #include "materials/thin_film.h"
 
@@ -152,7 +152,7 @@ TEST(MetalRoughIridescence, NoFilmIsTodaysBsdf) {
 
 TEST(MetalRoughIridescence, FilmChangesTheColour) {
     // A sanity check that the film is wired in: at 400 nm over a dielectric the normal
-    // reflection is no longer grey (the plain f0 is 0.04 in every channel).
+    // reflection is not grey (the plain f0 is 0.04 in every channel).
     const MetalRoughBsdf bsdf(film_params(0, 0, 1, 400));
     const auto s = bsdf.sample(Vec3(0, 0, 1), 0, {0.5f, 0.5f}, Transport::Radiance);
     ASSERT_TRUE(s && s->is_specular());

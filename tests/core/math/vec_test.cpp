@@ -19,7 +19,7 @@ std::vector<float> edge_values() {
             L::infinity(), -L::infinity(), L::quiet_NaN(), -L::quiet_NaN(),  1e-30f};
 }
 
-// is_black and is_finite as written before they became branch-free: every triple of edge
+// is_black and is_finite against their branching componentwise forms: every triple of edge
 // values, in every position, gives the same answer.
 TEST(Vec3Tests, IsBlackAndIsFiniteAgreeWithComponentwiseComparisons) {
     const std::vector<float> v = edge_values();

@@ -13,8 +13,8 @@
 namespace penumbra {
 namespace {
 
-// The CDF as the constructor builds it, and the sample as it was computed before the
-// guide table: upper_bound over the whole CDF.
+// The CDF as the constructor builds it, and the sample without the guide table:
+// upper_bound over the whole CDF.
 struct Reference {
     std::vector<float> func, cdf;
     float integral = 0;

@@ -1,7 +1,7 @@
 // scripts/crosscheck/efficiency.py's measures (relMSE, efficiency, the reference-error
 // correction, image reading, Cycles' timing lines) through its Python unit tests on
-// synthetic images, and its Lambertian Cornell box, whose smooth sphere showed shadow
-// rays from lifted origins blocked by the area light they were aimed at (spawn_ray).
+// synthetic images, and its Lambertian Cornell box, whose smooth sphere shows shadow
+// rays from lifted origins blocked by the area light they are aimed at (spawn_ray).
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <gtest/gtest.h>
@@ -37,10 +37,10 @@ float sphere_top(const test::ScratchDir& dir, const std::string& scene, const st
 }
 
 TEST(EfficiencyHarness, LambertianCornellSphereGetsTheSameDirectLightFromBothEstimators) {
-    // Light sampling alone and BSDF sampling alone estimate the same direct light. Before
-    // the fix light sampling gave 0.37x BSDF sampling's value here; BSDF sampling at 1024
-    // spp is good to about 5% over these 15 pixels, so the 15% bound sees a bias of that
-    // order and not noise.
+    // Light sampling alone and BSDF sampling alone estimate the same direct light. Shadow
+    // rays blocked by the light they aim at make light sampling give 0.37x BSDF sampling's
+    // value here; BSDF sampling at 1024 spp is good to about 5% over these 15 pixels, so
+    // the 15% bound sees a bias of that order and not noise.
     const test::ScratchDir dir;
     const std::string scene = dir.file("cornell-lambertian.gltf");
     const std::string cmd = "cd '" + test::source_path("scripts/crosscheck") +
