@@ -6,6 +6,7 @@
 
 #include "apps/penumbra/denoise_step.h"
 #include "apps/penumbra/farm_plan.h"
+#include "apps/penumbra/light_check.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "io/atomic_file.h"
@@ -60,6 +61,20 @@ MergedDenoise denoise_merged(const BatchJob& job, const ColorPipeline& color, Me
     return out;
 }
 
+// The warning one machine ends a nearly black or mostly clipped render with, for the
+// assembled image: measured on its RGB as the bands wrote it (the film's estimate,
+// already exposed, in the output space: the same pixels as one machine measures where
+// the output space is the working space), with the scene's facts from the first band's
+// header. Bands are parts of the image and do not warn themselves.
+std::optional<ImageWarning> merged_image_warning(const BatchJob& job, const MergedImage& image,
+                                                 const std::string& first_band) {
+    LightFacts facts;
+    facts.default_lights = image_attribute(first_band, "penumbra:default_lights_added", "0") == "1";
+    facts.file_lights = std::stoull(image_attribute(first_band, "penumbra:file_lights", "0"));
+    facts.generator = image_attribute(first_band, "penumbra:asset_generator", "");
+    return image_warning(measure_exposure(image.channels({"R", "G", "B"})), job.options, facts);
+}
+
 // Merges the bands of one image whose tasks all rendered (or skipped) their band.
 void merge_image(const BatchJob& job, const std::vector<TaskRecord>& bands, JobResult& r) {
     const int n = job.options.bands;
@@ -99,6 +114,11 @@ void merge_image(const BatchJob& job, const std::vector<TaskRecord>& bands, JobR
                             {"penumbra:spp", std::to_string(spp)},
                             {"penumbra:partial", partial ? "1" : "0"}};
     MergedImage image(exr);
+    const std::optional<ImageWarning> warning = merged_image_warning(job, image, exr[0].path);
+    if (warning) {
+        header.push_back({"penumbra:image_warning", warning->message});
+        r.image_warning = warning->kind;
+    }
     // The bands' previews show the film's estimate: a denoised image's is made anew.
     bool merge_previews = png.size() == exr.size();
     if (job.options.denoise) {
@@ -114,6 +134,7 @@ void merge_image(const BatchJob& job, const std::vector<TaskRecord>& bands, JobR
         image.write(r.output, header);
     }
     if (merge_previews) merge_bands(png, preview_path_for(r.output));
+    if (warning) LOG_WARNING(r.output << ": " << warning->message);
     r.spp = spp;
     r.rays = rays;
     r.status = partial ? JobStatus::Partial : JobStatus::Ok;

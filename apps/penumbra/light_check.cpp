@@ -78,7 +78,8 @@ bool add_default_lights_if_view_dark(SceneSetup& setup, const RenderCommandOptio
         LOG_INFO(setup.path << ": the view is lit by the file's lights (" << line << ")");
         return false;
     }
-    const std::string hint = light_units_hint(setup.scene, setup.file_lights, o.light_units);
+    const std::string hint =
+        light_units_hint(setup.scene.generator, setup.file_lights, o.light_units);
     LOG_WARNING(setup.path << ": the file's lights leave the view dark (" << percent(e.lit_fraction)
                            << " of a preview's pixels reach " << percent(kLitLuminance)
                            << " of display white, under " << percent(kMinLitFraction) << ")"
@@ -91,22 +92,26 @@ bool add_default_lights_if_view_dark(SceneSetup& setup, const RenderCommandOptio
     return true;
 }
 
-std::string light_units_hint(const Scene& scene, size_t file_lights,
+std::string light_units_hint(const std::string& generator, size_t file_lights,
                              const std::string& light_units) {
     if (file_lights == 0 || light_units != "photometric") return "";
     const std::string tag = "Blender I/O v";
-    const size_t at = scene.generator.find(tag);
+    const size_t at = generator.find(tag);
     if (at == std::string::npos) return "";
-    const long major = std::strtol(scene.generator.c_str() + at + tag.size(), nullptr, 10);
+    const long major = std::strtol(generator.c_str() + at + tag.size(), nullptr, 10);
     if (major != 1) return "";
-    return "the file's lights look like watts written as candela ('" + scene.generator +
+    return "the file's lights look like watts written as candela ('" + generator +
            "' wrote a lamp's power as its intensity; --light-units radiometric reads them as "
            "W/sr, which leaves point and spot lights 4 pi too bright: add --exposure " +
            stops(-std::log2(4 * kPi)) + ")";
 }
 
+LightFacts light_facts(const SceneSetup& setup) {
+    return {setup.default_lights, setup.file_lights, setup.scene.generator};
+}
+
 std::optional<ImageWarning> image_warning(const ImageExposure& e, const RenderCommandOptions& o,
-                                          const SceneSetup& setup) {
+                                          const LightFacts& facts) {
     if (!shows_light(o.integrator)) return std::nullopt;
     std::vector<std::string> causes;
     ImageWarning w;
@@ -115,16 +120,16 @@ std::optional<ImageWarning> image_warning(const ImageExposure& e, const RenderCo
         w.message = "image nearly black: " + percent(e.lit_fraction) + " of its pixels reach " +
                     percent(kLitLuminance) + " of display white (under " +
                     percent(kMinLitFraction) + ")";
-        if (!setup.default_lights && !user_environment(o))
+        if (!facts.default_lights && !user_environment(o))
             causes.push_back(o.default_light == "off"
                                  ? "the default lighting is off (--default-light auto or on "
                                    "adds a key and a fill light)"
                                  : "no default lighting (--default-light on adds a key and a "
                                    "fill light)");
-        const std::string hint = light_units_hint(setup.scene, setup.file_lights, o.light_units);
+        const std::string hint = light_units_hint(facts.generator, facts.file_lights, o.light_units);
         if (!hint.empty())
             causes.push_back(hint);
-        else if (setup.file_lights > 0 && o.light_units == "photometric")
+        else if (facts.file_lights > 0 && o.light_units == "photometric")
             causes.push_back(
                 "light intensities in W/sr and W/m^2 rather than candela and lux "
                 "(--light-units radiometric reads them 683 times brighter)");
@@ -141,12 +146,12 @@ std::optional<ImageWarning> image_warning(const ImageExposure& e, const RenderCo
         w.message = "image mostly clipped: " + percent(e.clipped_fraction) +
                     " of its pixels exceed display white (over " + percent(kMaxClippedFraction) +
                     ")";
-        if (setup.file_lights > 0 && o.light_units == "radiometric")
+        if (facts.file_lights > 0 && o.light_units == "radiometric")
             causes.push_back(
                 "the file's intensities read as W/sr and W/m^2 (--light-units "
                 "photometric, the spec's candela and lux, reads them 683 times "
                 "dimmer)");
-        if (setup.default_lights && o.default_light == "on")
+        if (facts.default_lights && o.default_light == "on")
             causes.push_back(
                 "the default lights added to the scene's own (--default-light "
                 "off leaves the scene to its own lights)");

@@ -34,7 +34,7 @@ bool add_default_lights_if_view_dark(SceneSetup& setup, const RenderCommandOptio
 // A hint when the file's punctual light intensities look like watts written as candela:
 // Khronos glTF Blender I/O 1.x (Blender 2.80 to 3.0) wrote a lamp's power in W as its
 // intensity, whatever the light's type. Empty otherwise.
-std::string light_units_hint(const Scene& scene, size_t file_lights,
+std::string light_units_hint(const std::string& generator, size_t file_lights,
                              const std::string& light_units);
 
 struct ImageWarning {
@@ -42,9 +42,19 @@ struct ImageWarning {
     std::string message;  // the measurement, then the likely causes and their options
 };
 
+// What the warning's causes read from the scene's setup. A render takes them from its
+// SceneSetup; a farm merge, which loads no scene, from the bands' headers
+// (penumbra:default_lights_added, penumbra:file_lights, penumbra:asset_generator).
+struct LightFacts {
+    bool default_lights = false;  // the default lights were added
+    size_t file_lights = 0;       // the file's punctual lights rendered
+    std::string generator;        // glTF asset.generator
+};
+LightFacts light_facts(const SceneSetup& setup);
+
 // The warning for a finished image measured by `e`, or none when it is neither nearly
 // black nor mostly clipped, or the integrator shows no light (a debug view).
 std::optional<ImageWarning> image_warning(const ImageExposure& e, const RenderCommandOptions& o,
-                                          const SceneSetup& setup);
+                                          const LightFacts& facts);
 
 }  // namespace penumbra

@@ -297,7 +297,8 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
     Metadata metadata = render_metadata(o, path, *setup, stats);
     // A band is a part of the image: the merged image is what a viewer sees.
     const std::optional<ImageWarning> warning =
-        job.band < 0 ? image_warning(measure_exposure(film.resolve(), o.exposure), o, *setup)
+        job.band < 0 ? image_warning(measure_exposure(film.resolve(), o.exposure), o,
+                                    light_facts(*setup))
                      : std::nullopt;
     if (warning) {
         metadata.push_back({"penumbra:image_warning", warning->message});

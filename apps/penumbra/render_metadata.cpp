@@ -26,6 +26,8 @@ Metadata render_metadata(const RenderCommandOptions& o, const std::string& scene
         {"penumbra:default_light", o.default_light},
         {"penumbra:default_lights_added", setup.default_lights ? "1" : "0"},
         {"penumbra:no_file_lights", o.no_file_lights ? "1" : "0"},
+        {"penumbra:file_lights", std::to_string(setup.file_lights)},
+        {"penumbra:asset_generator", setup.scene.generator},
         {"penumbra:exposure", o.exposure},
         {"penumbra:accelerator", o.accel},
         {"penumbra:sampler", sampler_in_effect(parse_sampler_type(o.sampler), o.spp)},

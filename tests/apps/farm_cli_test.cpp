@@ -250,6 +250,38 @@ TEST(FarmCli, MergeDenoisesTheAssembledBandsToTheBitsOfOneMachine) {
     EXPECT_FALSE(fs::exists(dir.file("farm/denoised.band-3-of-3.exr")));
 }
 
+// A nearly black image (the Cornell box at -12 EV: its brightest pixels, the light's
+// radiance 30, come to 0.007, under the 0.01 a lit pixel needs) warns once merged,
+// as one machine's render does: the same penumbra:image_warning (an exposure of whole
+// stops scales every pixel exactly, so the two measure the same numbers), and the farm's
+// table flags it. Its bands, parts of the image, do not warn.
+TEST(FarmCli, MergeWarnsOfANearlyBlackImageAsOneMachineDoes) {
+    const test::ScratchDir dir;
+    const auto job = [&](const std::string& name, const std::string& out_dir) {
+        return dir.write(name, R"({"defaults": {"width": 24, "spp": 2, "out_dir": ")" + out_dir +
+                                   R"(", "exposure": -12, "default_light": "off"},
+  "jobs": [{"scene": ")" + kCornell + R"(", "bands": 2, "name": "dark.exr"}]})");
+    };
+    const std::string ref_job = job("ref.json", "ref"), farm_job = job("farm.json", "farm");
+    const test::CliResult ref = run_penumbra({"render", "--job", ref_job});
+    ASSERT_EQ(ref.status, 0) << ref.output;
+    const std::string warning = attribute(dir.file("ref/dark.exr"), "penumbra:image_warning");
+    ASSERT_EQ(warning.rfind("image nearly black: ", 0), 0u) << warning;
+    for (int i = 0; i < 2; ++i) {
+        const test::CliResult t =
+            run_penumbra({"farm", "task", farm_job, "--index", std::to_string(i)});
+        ASSERT_EQ(t.status, 0) << t.output;
+        EXPECT_EQ(t.output.find("image nearly black"), std::string::npos) << t.output;
+    }
+    const test::CliResult m = run_penumbra({"farm", "merge", farm_job});
+    ASSERT_EQ(m.status, 0) << m.output;
+    EXPECT_NE(m.output.find("image nearly black"), std::string::npos) << m.output;
+    EXPECT_TRUE(std::regex_search(m.output, std::regex("cornell-box\\.gltf .* BLACK .*dark\\.exr")))
+        << m.output;
+    EXPECT_EQ(attribute(dir.file("farm/dark.exr"), "penumbra:image_warning"), warning);
+    EXPECT_EQ(header(dir.file("ref/dark.exr")), header(dir.file("farm/dark.exr")));
+}
+
 TEST(FarmCli, ATaskRefusesAJobFileChangedSinceSubmit) {
     const test::ScratchDir dir;
     const std::string job = dir.write(
