@@ -18,6 +18,58 @@ using nlohmann::json;
 
 namespace {
 
+// Every key a defaults or jobs[] entry may hold.
+const char* const kKeys[] = {"scene",
+                             "camera",
+                             "variant",
+                             "integrator",
+                             "strategy",
+                             "sampler",
+                             "filter",
+                             "accel",
+                             "output",
+                             "out_dir",
+                             "name",
+                             "frames",
+                             "width",
+                             "height",
+                             "max_depth",
+                             "frame",
+                             "spp",
+                             "seed",
+                             "time",
+                             "time_limit",
+                             "fps",
+                             "shutter",
+                             "shutter_open",
+                             "shutter_close",
+                             "ocio_config",
+                             "working_space",
+                             "output_colorspace",
+                             "display",
+                             "view",
+                             "look",
+                             "aov",
+                             "half",
+                             "compression",
+                             "light_units",
+                             "default_light",
+                             "no_file_lights",
+                             "exposure",
+                             "strict",
+                             "max_texture_pixels",
+                             "target_error",
+                             "adaptive_min_spp",
+                             "clamp_direct",
+                             "clamp_indirect",
+                             "regularize",
+                             "bands",
+                             "frames_per_task",
+                             "light_sampler",
+                             "triangle_sampling",
+                             "env_sampling",
+                             "denoise"};
+
 // Reads one entry's keys into settings; `where` prefixes every message.
 class SettingsReader {
 public:
@@ -25,56 +77,21 @@ public:
         : m_object(object), m_where(std::move(where)), m_base(base) {}
 
     void read(JobSettings& s) const {
-        static const char* const kKeys[] = {"scene",
-                                            "camera",
-                                            "variant",
-                                            "integrator",
-                                            "strategy",
-                                            "sampler",
-                                            "filter",
-                                            "accel",
-                                            "output",
-                                            "out_dir",
-                                            "name",
-                                            "frames",
-                                            "width",
-                                            "height",
-                                            "max_depth",
-                                            "frame",
-                                            "spp",
-                                            "seed",
-                                            "time",
-                                            "time_limit",
-                                            "fps",
-                                            "shutter",
-                                            "shutter_open",
-                                            "shutter_close",
-                                            "ocio_config",
-                                            "working_space",
-                                            "output_colorspace",
-                                            "display",
-                                            "view",
-                                            "look",
-                                            "aov",
-                                            "half",
-                                            "compression",
-                                            "light_units",
-                                            "default_light",
-                                            "no_file_lights",
-                                            "exposure",
-                                            "strict",
-                                            "max_texture_pixels",
-                                            "target_error",
-                                            "adaptive_min_spp",
-                                            "clamp_direct",
-                                            "clamp_indirect",
-                                            "regularize",
-                                            "bands",
-                                            "frames_per_task",
-                                            "light_sampler",
-                                            "triangle_sampling",
-                                            "env_sampling",
-                                            "denoise"};
+        check_keys();
+        read_names(s);
+        read_counts(s);
+        read_timing(s);
+        read_colour(s);
+        read_lighting(s);
+        read_quality(s);
+    }
+
+    [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+        throw SceneError(m_where + "." + key + ": " + what);
+    }
+
+private:
+    void check_keys() const {
         for (const auto& [key, value] : m_object.items()) {
             bool known = false;
             for (const char* k : kKeys) known = known || key == k;
@@ -84,6 +101,10 @@ public:
                 fail(key, "unknown key (expected one of: " + list + ")");
             }
         }
+    }
+
+    // Strings and paths: what to render, how, and where the output goes.
+    void read_names(JobSettings& s) const {
         text("camera", s.camera);
         text("variant", s.variant);
         text("integrator", s.integrator);
@@ -100,6 +121,10 @@ public:
             } catch (const std::invalid_argument& e) {
                 fail("frames", e.what());
             }
+    }
+
+    // Image size, depth, frame and task counts, samples and seed.
+    void read_counts(JobSettings& s) const {
         integer("width", s.width, 1, 1 << 15);
         integer("height", s.height, 1, 1 << 15);
         integer("max_depth", s.max_depth, 0, 1024);
@@ -114,6 +139,10 @@ public:
             if (!v.is_number_unsigned()) fail("seed", "expected a non-negative integer");
             s.seed = v.get<uint64_t>();
         }
+    }
+
+    // Scene time, time limit and shutter.
+    void read_timing(JobSettings& s) const {
         number("time", s.time, false);
         number("time_limit", s.time_limit, true);
         number("fps", s.fps, true);
@@ -122,6 +151,10 @@ public:
         number("shutter", s.shutter, false);
         if (s.shutter && !(*s.shutter >= 0 && *s.shutter <= 1))
             fail("shutter", "expected a fraction of a frame in [0, 1]");
+    }
+
+    // Colour management and output encoding.
+    void read_colour(JobSettings& s) const {
         // "builtin" names the built-in config, not a file next to the job file.
         if (m_object.contains("ocio_config") && m_object["ocio_config"] == "builtin")
             text("ocio_config", s.ocio_config);
@@ -135,6 +168,10 @@ public:
         text("aov", s.aov);
         text("compression", s.compression);
         boolean("half", s.half);
+    }
+
+    // Light units, default light, light sampling and exposure.
+    void read_lighting(JobSettings& s) const {
         choice("light_units", s.light_units, {"photometric", "radiometric"});
         choice("default_light", s.default_light, {"auto", "on", "off"});
         boolean("no_file_lights", s.no_file_lights);
@@ -144,6 +181,10 @@ public:
         number("exposure", s.exposure, false);
         if (s.exposure && std::abs(*s.exposure) > 64)
             fail("exposure", "expected stops in [-64, 64]");
+    }
+
+    // Strictness, denoising, adaptive sampling, clamping and texture limits.
+    void read_quality(JobSettings& s) const {
         boolean("strict", s.strict);
         boolean("denoise", s.denoise);
         number("target_error", s.target_error, true);
@@ -161,11 +202,6 @@ public:
         }
     }
 
-    [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-        throw SceneError(m_where + "." + key + ": " + what);
-    }
-
-private:
     void text(const char* key, std::optional<std::string>& out) const {
         if (!m_object.contains(key)) return;
         const json& v = m_object[key];
