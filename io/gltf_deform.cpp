@@ -132,12 +132,8 @@ std::vector<double> weights_at(const GltfContext& ctx, const NodeMotion& motion,
     return w;
 }
 
-}  // namespace
-
-std::optional<DeformedObject> add_deformed_object(const GltfContext& ctx,
-                                                  const NodeMotion& motion, int node_index,
-                                                  const std::vector<MeshOrigin>& origins,
-                                                  Scene& scene) {
+// The number of morph targets, the same in every primitive, and weights of that length.
+size_t morph_target_count(const GltfContext& ctx, int node_index) {
     const tinygltf::Node& node = ctx.model.nodes[size_t(node_index)];
     const tinygltf::Mesh& gm = ctx.model.meshes[size_t(node.mesh)];
     const std::string el = element("nodes", size_t(node_index));
@@ -151,8 +147,125 @@ std::optional<DeformedObject> add_deformed_object(const GltfContext& ctx,
             ctx.fail(w == &node.weights ? el : element("meshes", size_t(node.mesh)),
                      "weights has " + std::to_string(w->size()) + " entries for " +
                          std::to_string(targets) + " morph targets");
+    return targets;
+}
 
+// Morph weights and joint matrices (joint world times inverse bind) at each shutter step.
+struct StepInputs {
+    std::vector<std::vector<double>> weights;
+    std::vector<std::vector<Mat4>> joint_matrices;  // empty per step without a skin
+};
+
+StepInputs sample_steps(const GltfContext& ctx, const NodeMotion& motion, int node_index,
+                        size_t targets, const std::optional<Skin>& skin, int steps) {
     const Shutter& shutter = motion.shutter();
+    StepInputs in;
+    in.joint_matrices.resize(static_cast<size_t>(steps));
+    in.weights.resize(static_cast<size_t>(steps));
+    for (int k = 0; k < steps; ++k) {
+        const double t = shutter.time(k, steps);
+        in.weights[size_t(k)] = weights_at(ctx, motion, node_index, targets, t);
+        if (skin)
+            for (size_t j = 0; j < skin->joints.size(); ++j)
+                in.joint_matrices[size_t(k)].push_back(motion.world(skin->joints[j], t) *
+                                                       skin->inverse_bind[j]);
+    }
+    return in;
+}
+
+// Linear blend skinning: sum of weight * joint world * inverse bind, for file vertex v.
+Mat4 skin_matrix(const PrimitiveDeformation& d, size_t v, const std::vector<Mat4>& joints) {
+    Mat4 m;
+    const SkinWeights& sw = d.skin;
+    for (size_t set = 0; set < sw.influences; ++set)
+        for (int c = 0; c < 4; ++c) {
+            const size_t at = set * 4 * d.vertices + 4 * v + size_t(c);
+            const float w = sw.weights[at];
+            if (w == 0) continue;
+            const Mat4& jm = joints[size_t(sw.joints[at])];
+            for (int r = 0; r < 4; ++r)
+                for (int q = 0; q < 4; ++q) m(r, q) += w * jm(r, q);
+        }
+    return m;
+}
+
+// Flat shading: each triangle's own three vertices carry its face normal.
+void set_face_normals(const std::vector<Vec3>& p, std::vector<Vec3>& n) {
+    for (size_t t = 0; t + 2 < p.size(); t += 3) {
+        const Vec3 f = cross(p[t + 1] - p[t], p[t + 2] - p[t]);
+        const float len = length(f);
+        const Vec3 u = len > 0 && std::isfinite(len) ? f / len : Vec3(0, 0, 1);
+        n[t] = n[t + 1] = n[t + 2] = u;
+    }
+}
+
+// Morphs, then skins (when `joints` is given), the base mesh's positions and normals at one
+// step.
+void deform_step(const TriangleMesh& base, const MeshOrigin& origin, const PrimitiveDeformation& d,
+                 const std::vector<double>& weights, size_t targets,
+                 const std::vector<Mat4>* joints, std::vector<Vec3>& p, std::vector<Vec3>& n) {
+    const bool flat = !origin.source_vertex.empty();
+    p = base.positions;
+    n = base.normals;
+    for (size_t i = 0; i < p.size(); ++i) {
+        const size_t v = flat ? size_t(origin.source_vertex[i]) : i;
+        for (size_t t = 0; t < targets; ++t) {
+            const float w = float(weights[t]);
+            if (w == 0) continue;
+            if (!d.dp[t].empty()) p[i] += w * d.dp[t][v];
+            if (!d.dn[t].empty() && !flat) n[i] += w * d.dn[t][v];
+        }
+        if (joints) {
+            const Mat4 m = skin_matrix(d, v, *joints);
+            p[i] = point(m, p[i]);
+            if (!flat) n[i] = normal(m, n[i]);
+        } else if (!flat && length_squared(n[i]) > 0) {
+            n[i] = normalize(n[i]);
+        }
+    }
+    if (flat) set_face_normals(p, n);
+}
+
+// A copy of `base` carrying one deformed position and normal set per step; the motion sets
+// are dropped again when no step moves a vertex.
+TriangleMesh deform_mesh(const GltfContext& ctx, const std::string& el, const TriangleMesh& base,
+                         const MeshOrigin& origin, const PrimitiveDeformation& d,
+                         const StepInputs& in, size_t targets, bool skinned) {
+    TriangleMesh mesh = base;
+    bool changes = false;
+    for (size_t k = 0; k < in.weights.size(); ++k) {
+        std::vector<Vec3> p, n;
+        deform_step(base, origin, d, in.weights[k], targets,
+                    skinned ? &in.joint_matrices[k] : nullptr, p, n);
+        if (k > 0) changes = changes || p != mesh.motion_positions[0];
+        mesh.motion_positions.push_back(std::move(p));
+        mesh.motion_normals.push_back(std::move(n));
+    }
+    for (const auto& p : mesh.motion_positions)
+        for (const Vec3& x : p)
+            if (!is_finite(x)) ctx.fail(el, "deformed vertices are not finite");
+    mesh.positions = mesh.motion_positions[0];
+    mesh.normals = mesh.motion_normals[0];
+    mesh.bounds = Bounds3();
+    for (const auto& p : mesh.motion_positions)
+        for (const Vec3& x : p) mesh.bounds.expand(x);
+    if (!changes) {
+        mesh.motion_positions.clear();
+        mesh.motion_normals.clear();
+    }
+    return mesh;
+}
+
+}  // namespace
+
+std::optional<DeformedObject> add_deformed_object(const GltfContext& ctx, const NodeMotion& motion,
+                                                  int node_index,
+                                                  const std::vector<MeshOrigin>& origins,
+                                                  Scene& scene) {
+    const tinygltf::Node& node = ctx.model.nodes[size_t(node_index)];
+    const std::string el = element("nodes", size_t(node_index));
+    const size_t targets = morph_target_count(ctx, node_index);
+
     std::vector<const AnimationCurve*> curves;
     const NodeChannels* nc = motion.animations().node(node_index);
     if (nc && nc->weights) curves.push_back(nc->weights);
@@ -164,87 +277,19 @@ std::optional<DeformedObject> add_deformed_object(const GltfContext& ctx,
             for (const AnimationCurve* c : motion.chain_curves(j)) curves.push_back(c);
     }
     bool morphed = false;
-    for (double w : weights_at(ctx, motion, node_index, targets, shutter.open))
+    for (double w : weights_at(ctx, motion, node_index, targets, motion.shutter().open))
         morphed = morphed || w != 0;
     const int steps = motion.steps(curves);
     if (!skin && !morphed && steps < 2) return std::nullopt;
-
-    std::vector<std::vector<Mat4>> joint_matrices(static_cast<size_t>(steps));
-    std::vector<std::vector<double>> weights(static_cast<size_t>(steps));
-    for (int k = 0; k < steps; ++k) {
-        const double t = shutter.time(k, steps);
-        weights[size_t(k)] = weights_at(ctx, motion, node_index, targets, t);
-        if (skin)
-            for (size_t j = 0; j < skin->joints.size(); ++j)
-                joint_matrices[size_t(k)].push_back(motion.world(skin->joints[j], t) *
-                                                    skin->inverse_bind[j]);
-    }
+    const StepInputs in = sample_steps(ctx, motion, node_index, targets, skin, steps);
 
     Object object;
     object.name = scene.objects[size_t(node.mesh)].name + " (" + el + ")";
     for (uint32_t mesh_index : scene.objects[size_t(node.mesh)].meshes) {
         const MeshOrigin& origin = origins[mesh_index];
-        const PrimitiveDeformation d =
-            read_primitive(ctx, origin, skin ? skin->joints.size() : 0);
-        TriangleMesh mesh = scene.meshes[mesh_index];
-        const bool flat = !origin.source_vertex.empty();
-        auto src = [&](size_t i) { return flat ? size_t(origin.source_vertex[i]) : i; };
-        bool changes = false;
-        for (int k = 0; k < steps; ++k) {
-            std::vector<Vec3> p = scene.meshes[mesh_index].positions;
-            std::vector<Vec3> n = scene.meshes[mesh_index].normals;
-            for (size_t i = 0; i < p.size(); ++i) {
-                const size_t v = src(i);
-                for (size_t t = 0; t < targets; ++t) {
-                    const float w = float(weights[size_t(k)][t]);
-                    if (w == 0) continue;
-                    if (!d.dp[t].empty()) p[i] += w * d.dp[t][v];
-                    if (!d.dn[t].empty() && !flat) n[i] += w * d.dn[t][v];
-                }
-                if (skin) {
-                    // Linear blend skinning: sum of weight * joint world * inverse bind.
-                    Mat4 m;
-                    const SkinWeights& sw = d.skin;
-                    for (size_t set = 0; set < sw.influences; ++set)
-                        for (int c = 0; c < 4; ++c) {
-                            const size_t at = set * 4 * d.vertices + 4 * v + size_t(c);
-                            const float w = sw.weights[at];
-                            if (w == 0) continue;
-                            const Mat4& jm = joint_matrices[size_t(k)][size_t(sw.joints[at])];
-                            for (int r = 0; r < 4; ++r)
-                                for (int q = 0; q < 4; ++q) m(r, q) += w * jm(r, q);
-                        }
-                    p[i] = point(m, p[i]);
-                    if (!flat) n[i] = normal(m, n[i]);
-                } else if (!flat && length_squared(n[i]) > 0) {
-                    n[i] = normalize(n[i]);
-                }
-            }
-            if (flat) {
-                // Flat shading: each triangle's own three vertices carry its face normal.
-                for (size_t t = 0; t + 2 < p.size(); t += 3) {
-                    const Vec3 f = cross(p[t + 1] - p[t], p[t + 2] - p[t]);
-                    const float len = length(f);
-                    const Vec3 u = len > 0 && std::isfinite(len) ? f / len : Vec3(0, 0, 1);
-                    n[t] = n[t + 1] = n[t + 2] = u;
-                }
-            }
-            if (k > 0) changes = changes || p != mesh.motion_positions[0];
-            mesh.motion_positions.push_back(std::move(p));
-            mesh.motion_normals.push_back(std::move(n));
-        }
-        for (const auto& p : mesh.motion_positions)
-            for (const Vec3& x : p)
-                if (!is_finite(x)) ctx.fail(el, "deformed vertices are not finite");
-        mesh.positions = mesh.motion_positions[0];
-        mesh.normals = mesh.motion_normals[0];
-        mesh.bounds = Bounds3();
-        for (const auto& p : mesh.motion_positions)
-            for (const Vec3& x : p) mesh.bounds.expand(x);
-        if (!changes) {
-            mesh.motion_positions.clear();
-            mesh.motion_normals.clear();
-        }
+        const PrimitiveDeformation d = read_primitive(ctx, origin, skin ? skin->joints.size() : 0);
+        TriangleMesh mesh = deform_mesh(ctx, el, scene.meshes[mesh_index], origin, d, in, targets,
+                                        skin.has_value());
         object.bounds.expand(mesh.bounds);
         object.meshes.push_back(uint32_t(scene.meshes.size()));
         scene.meshes.push_back(std::move(mesh));
