@@ -158,54 +158,26 @@ void compare_images(const Scene& scene, const CameraDesc& cam_desc, int width, i
     }
 }
 
-}  // namespace
-
-int run_check_accel_command(const CheckAccelOptions& o) {
-    set_log_level(LogLevel::Warning);
-    GltfLoadOptions load;
-    try {
-        const ShutterInterval shutter = resolve_shutter(o.timeline);
-        load.shutter_open = shutter.open;
-        load.shutter_close = shutter.close;
-    } catch (const std::invalid_argument& e) {
-        throw SceneError(o.scene + ": " + e.what());
-    }
-    const Scene scene = load_gltf(o.scene, load);
-    const CameraDesc cam_desc =
-        scene.cameras.empty() ? default_camera(scene.bounds(), 1.0f) : scene.cameras[0];
-    const float aspect = cam_desc.aspect_ratio > 0 ? cam_desc.aspect_ratio
-                         : cam_desc.type == ProjectionType::Orthographic
-                             ? cam_desc.xmag / cam_desc.ymag
-                             : 1.0f;
-    const int width = o.width;
-    const int height = std::max(1, int(std::lround(width / aspect)));
-
+// Every accelerator type, then Embree once per ISA asked for; names[i] names accels[i].
+std::vector<std::unique_ptr<Accel>> build_accels(const Scene& scene,
+                                                 const std::vector<std::string>& embree_isas,
+                                                 std::vector<std::string>& names) {
     std::vector<std::unique_ptr<Accel>> accels;
-    std::vector<std::string> names = accel_type_names();
+    names = accel_type_names();
     for (const std::string& name : accel_type_names())
         accels.push_back(make_accel(parse_accel_type(name), scene));
-    for (const std::string& isa : o.embree_isas) {
+    for (const std::string& isa : embree_isas) {
         EmbreeBuildOptions eo;
         eo.device_config = "isa=" + isa;
         accels.push_back(std::make_unique<EmbreeAccel>(scene, eo));
         names.push_back("embree-" + isa);
     }
+    return accels;
+}
 
-    const std::unique_ptr<Camera> camera = make_camera(cam_desc, width, height);
-    CheckRayOptions ro;
-    ro.random = ro.shadow = ro.bounce = o.rays;
-    ro.seed = o.seed;
-    const std::vector<CheckRay> rays = make_check_rays(scene, *camera, *accels[0], ro);
-    size_t per_kind[kRayKinds] = {};
-    for (const CheckRay& r : rays) ++per_kind[static_cast<int>(r.kind)];
-
-    std::printf("%s: %zu triangles (%zu objects, %zu instances)\n", o.scene.c_str(),
-                scene.triangle_count(), scene.objects.size(), scene.instances.size());
-    std::printf(
-        "rays: %zu camera (%dx%d, camera '%s'), %zu random, %zu shadow, %zu bounce; "
-        "seed %llu\n",
-        per_kind[0], width, height, cam_desc.name.c_str(), per_kind[1], per_kind[2], per_kind[3],
-        o.seed);
+// Build time, memory and tracing speed of each accelerator, on one thread and on all.
+void print_speed_table(const std::vector<std::unique_ptr<Accel>>& accels,
+                       const std::vector<std::string>& names, const std::vector<CheckRay>& rays) {
     const int threads = tbb::this_task_arena::max_concurrency();
     std::printf("\n  %-14s %10s %12s %14s %16s\n", "accelerator", "build", "memory",
                 "Mrays/s 1 thr", ("Mrays/s " + std::to_string(threads) + " thr").c_str());
@@ -217,7 +189,13 @@ int run_check_accel_command(const CheckAccelOptions& o) {
         std::printf("  %-14s %8.2f ms %12s %14.2f %16.2f\n", names[i].c_str(),
                     st.build_seconds * 1e3, format_bytes(st.memory_bytes).c_str(), single, multi);
     }
+}
 
+// Compares every accelerator's hits with the first's and prints the table and the first
+// disagreements; true when each stays within threshold.
+bool check_agreement(const Scene& scene, const std::vector<CheckRay>& rays,
+                     const std::vector<std::unique_ptr<Accel>>& accels,
+                     const std::vector<std::string>& names, double threshold) {
     const TraceResults reference = trace_rays(*accels[0], rays);
     const std::string ref_name = names[0];
     std::printf(
@@ -241,7 +219,7 @@ int run_check_accel_command(const CheckAccelOptions& o) {
                     (unsigned long long)rep.count(Disagreement::Coincident),
                     (unsigned long long)rep.count(Disagreement::Other),
                     (unsigned long long)rep.not_identical);
-        pass = pass && rep.passes(o.threshold);
+        pass = pass && rep.passes(threshold);
         reports.push_back(std::move(rep));
     }
     for (const AgreementReport& rep : reports)
@@ -261,6 +239,53 @@ int run_check_accel_command(const CheckAccelOptions& o) {
             (unsigned long long)rep.per_kind[3]);
         for (const std::string& e : rep.examples) std::printf("  %s\n", e.c_str());
     }
+    return pass;
+}
+
+}  // namespace
+
+int run_check_accel_command(const CheckAccelOptions& o) {
+    set_log_level(LogLevel::Warning);
+    GltfLoadOptions load;
+    try {
+        const ShutterInterval shutter = resolve_shutter(o.timeline);
+        load.shutter_open = shutter.open;
+        load.shutter_close = shutter.close;
+    } catch (const std::invalid_argument& e) {
+        throw SceneError(o.scene + ": " + e.what());
+    }
+    const Scene scene = load_gltf(o.scene, load);
+    const CameraDesc cam_desc =
+        scene.cameras.empty() ? default_camera(scene.bounds(), 1.0f) : scene.cameras[0];
+    const float aspect = cam_desc.aspect_ratio > 0 ? cam_desc.aspect_ratio
+                         : cam_desc.type == ProjectionType::Orthographic
+                             ? cam_desc.xmag / cam_desc.ymag
+                             : 1.0f;
+    const int width = o.width;
+    const int height = std::max(1, int(std::lround(width / aspect)));
+
+    std::vector<std::string> names;
+    const std::vector<std::unique_ptr<Accel>> accels =
+        build_accels(scene, o.embree_isas, names);
+
+    const std::unique_ptr<Camera> camera = make_camera(cam_desc, width, height);
+    CheckRayOptions ro;
+    ro.random = ro.shadow = ro.bounce = o.rays;
+    ro.seed = o.seed;
+    const std::vector<CheckRay> rays = make_check_rays(scene, *camera, *accels[0], ro);
+    size_t per_kind[kRayKinds] = {};
+    for (const CheckRay& r : rays) ++per_kind[static_cast<int>(r.kind)];
+
+    std::printf("%s: %zu triangles (%zu objects, %zu instances)\n", o.scene.c_str(),
+                scene.triangle_count(), scene.objects.size(), scene.instances.size());
+    std::printf(
+        "rays: %zu camera (%dx%d, camera '%s'), %zu random, %zu shadow, %zu bounce; "
+        "seed %llu\n",
+        per_kind[0], width, height, cam_desc.name.c_str(), per_kind[1], per_kind[2], per_kind[3],
+        o.seed);
+    print_speed_table(accels, names, rays);
+
+    const bool pass = check_agreement(scene, rays, accels, names, o.threshold);
 
     if (o.images) compare_images(scene, cam_desc, width, height, o.spp, accels, names);
 

@@ -222,6 +222,79 @@ std::unique_ptr<DenoiseStep> denoise_job(const BatchJob& job, const Film& film, 
 }
 
 // The per-image pipeline: set up, render in passes, write. Errors propagate.
+// A render's checkpoint: where it lives, what it must match, and what an earlier run of
+// the same render left there.
+struct JobCheckpoint {
+    std::string path;
+    std::string fingerprint;
+    CheckpointState prior;
+};
+
+// Continue from a checkpoint of this very render into `resumed`; a stale or damaged one
+// is named and the render starts from sample 0.
+JobCheckpoint resume_from_checkpoint(const BatchJob& job, const SceneSetup& setup,
+                                     const std::string& output, Film& resumed,
+                                     RenderOptions& ropt) {
+    const RenderCommandOptions& o = job.options;
+    JobCheckpoint c{checkpoint_path(output), render_fingerprint(job, setup, ropt), {}};
+    std::string why;
+    if (const auto state_read = read_checkpoint(c.path, c.fingerprint, resumed, &why)) {
+        c.prior = *state_read;
+        ropt.resume = &resumed;
+        ropt.resume_spp = c.prior.spp;
+        if (!o.quiet)
+            std::fprintf(stderr, "%s: resuming from the checkpoint at %u of %u spp\n",
+                         output.c_str(), c.prior.spp, o.spp);
+    } else if (fs::exists(c.path)) {
+        LOG_WARNING(why << "; rendering from sample 0");
+    }
+    return c;
+}
+
+// Writes the rendered film (denoised, with its header and any warning about how it
+// looks), drops the checkpoint of a finished render and reports the image.
+void write_job_outputs(const BatchJob& job, const SceneSetup& setup, const Film& film,
+                       const RenderStats& stats, const std::string& output,
+                       const std::string& ckpt, JobResult& result) {
+    const RenderCommandOptions& o = job.options;
+    const std::string& path = job.scene;
+    Metadata metadata = render_metadata(o, path, setup, stats);
+    // A band is a part of the image: the merged image is what a viewer sees.
+    const std::optional<ImageWarning> warning =
+        job.band < 0 ? image_warning(measure_exposure(film.resolve(), o.exposure), o,
+                                    light_facts(setup))
+                     : std::nullopt;
+    if (warning) {
+        metadata.push_back({"penumbra:image_warning", warning->message});
+        result.image_warning = warning->kind;
+    }
+    const std::unique_ptr<DenoiseStep> denoised = denoise_job(job, film, stats.spp, output);
+    if (denoised && o.timing_metadata)
+        metadata.push_back({"penumbra:denoise_seconds", float(denoised->seconds)});
+    const DenoiseInput band_input =
+        o.denoise && job.band >= 0 ? film.denoise_input() : DenoiseInput();
+    const auto t0 = Clock::now();
+    const RenderFiles files =
+        render_files_for(o, output, denoised.get(), band_input.width() > 0 ? &band_input : nullptr);
+    const RenderFilesResult written =
+        write_render(files, film, *setup.color, setup.camera_desc, std::move(metadata));
+    result.relmse = written.relmse;
+    result.noisy_relmse = written.noisy_relmse;
+    if (denoised) result.denoise_relmse_estimate = denoised->result.relmse_estimate;
+    result.peak_memory = peak_memory_bytes();
+    std::error_code ec;
+    if (!stats.interrupted) fs::remove(ckpt, ec);
+    const double write_s = since(t0);
+    result.status = stats.interrupted ? JobStatus::Partial : JobStatus::Ok;
+    if (stats.interrupted)
+        result.message = "interrupted: partial image; the same command continues it from " + ckpt;
+    if (!o.quiet)
+        print_image_report(
+            {path, output, files.preview, o, setup, stats, write_s, written, denoised.get()});
+    // Last, where a batch's log is read: the image exists, and why it looks wrong.
+    if (warning) LOG_WARNING(output << ": " << warning->message);
+}
+
 void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
     const RenderCommandOptions& o = job.options;
     const std::string& path = job.scene;
@@ -240,23 +313,11 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
 
     RenderOptions ropt = job_render_options(job, setup->height, state);
 
-    // Continue from a checkpoint of this very render; a stale or damaged one is named
-    // and the render starts from sample 0.
-    const std::string ckpt = checkpoint_path(output);
-    const std::string fingerprint = render_fingerprint(job, *setup, ropt);
     Film resumed(setup->width, setup->height, ropt.aovs);
-    CheckpointState prior;
-    std::string why;
-    if (const auto state_read = read_checkpoint(ckpt, fingerprint, resumed, &why)) {
-        prior = *state_read;
-        ropt.resume = &resumed;
-        ropt.resume_spp = prior.spp;
-        if (!o.quiet)
-            std::fprintf(stderr, "%s: resuming from the checkpoint at %u of %u spp\n",
-                         output.c_str(), prior.spp, o.spp);
-    } else if (fs::exists(ckpt)) {
-        LOG_WARNING(why << "; rendering from sample 0");
-    }
+    const JobCheckpoint checkpoint = resume_from_checkpoint(job, *setup, output, resumed, ropt);
+    const std::string& ckpt = checkpoint.path;
+    const std::string& fingerprint = checkpoint.fingerprint;
+    const CheckpointState& prior = checkpoint.prior;
     const uint64_t rays_start = setup->accel->rays_traced();
     const auto render_start = Clock::now();
     auto save_checkpoint = [&](const Film& f, uint32_t spp) {
@@ -294,41 +355,7 @@ void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
     // exists without what continues it.
     if (stats.interrupted) save_checkpoint(film, stats.spp);
 
-    Metadata metadata = render_metadata(o, path, *setup, stats);
-    // A band is a part of the image: the merged image is what a viewer sees.
-    const std::optional<ImageWarning> warning =
-        job.band < 0 ? image_warning(measure_exposure(film.resolve(), o.exposure), o,
-                                    light_facts(*setup))
-                     : std::nullopt;
-    if (warning) {
-        metadata.push_back({"penumbra:image_warning", warning->message});
-        result.image_warning = warning->kind;
-    }
-    const std::unique_ptr<DenoiseStep> denoised = denoise_job(job, film, stats.spp, output);
-    if (denoised && o.timing_metadata)
-        metadata.push_back({"penumbra:denoise_seconds", float(denoised->seconds)});
-    const DenoiseInput band_input =
-        o.denoise && job.band >= 0 ? film.denoise_input() : DenoiseInput();
-    const auto t0 = Clock::now();
-    const RenderFiles files =
-        render_files_for(o, output, denoised.get(), band_input.width() > 0 ? &band_input : nullptr);
-    const RenderFilesResult written =
-        write_render(files, film, *setup->color, cam_desc, std::move(metadata));
-    result.relmse = written.relmse;
-    result.noisy_relmse = written.noisy_relmse;
-    if (denoised) result.denoise_relmse_estimate = denoised->result.relmse_estimate;
-    result.peak_memory = peak_memory_bytes();
-    std::error_code ec;
-    if (!stats.interrupted) fs::remove(ckpt, ec);
-    const double write_s = since(t0);
-    result.status = stats.interrupted ? JobStatus::Partial : JobStatus::Ok;
-    if (stats.interrupted)
-        result.message = "interrupted: partial image; the same command continues it from " + ckpt;
-    if (!o.quiet)
-        print_image_report(
-            {path, output, files.preview, o, *setup, stats, write_s, written, denoised.get()});
-    // Last, where a batch's log is read: the image exists, and why it looks wrong.
-    if (warning) LOG_WARNING(output << ": " << warning->message);
+    write_job_outputs(job, *setup, film, stats, output, ckpt, result);
 }
 
 }  // namespace

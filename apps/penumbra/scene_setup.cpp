@@ -1,7 +1,6 @@
 #include "apps/penumbra/scene_setup.h"
 
 #include "apps/penumbra/light_check.h"
-#include "apps/penumbra/sampling_options.h"
 
 #include <chrono>
 #include <cmath>
@@ -25,144 +24,6 @@
 #include "materials/material.h"
 
 namespace penumbra {
-
-void add_image_options(CLI::App* cmd, RenderCommandOptions& o) {
-    cmd->add_option("--width", o.width,
-                    "Image width in pixels (default 640, or from --height and the camera's "
-                    "aspect ratio)")
-        ->check(CLI::Range(1, 1 << 15));
-    cmd->add_option("--height", o.height,
-                    "Image height in pixels (default: from the width and the camera's aspect "
-                    "ratio, else 4:3)")
-        ->check(CLI::Range(1, 1 << 15));
-    cmd->add_option("--spp", o.spp, "Samples per pixel")->capture_default_str()->check(
-        CLI::Range(1u, 1u << 24));
-    cmd->add_option("--threads", o.threads, "Worker threads (0: all cores)")
-        ->capture_default_str()
-        ->check(CLI::Range(0, 4096));
-    cmd->add_option("--seed", o.seed, "Random seed; the same seed gives the same image")
-        ->capture_default_str();
-    cmd->add_option("--camera", o.camera,
-                    "Camera by name or index (default: the first camera in the file, else "
-                    "one framing the whole scene)");
-    cmd->add_option("--variant", o.variant,
-                    "glTF material variant by name (KHR_materials_variants; default: the "
-                    "default materials)");
-    std::string integrator_help = "Integrator:";
-    std::vector<std::string> integrator_list;
-    for (const auto& [name, desc] : integrator_names()) {
-        integrator_help += "\n  " + name + ": " + desc;
-        integrator_list.push_back(name);
-    }
-    cmd->add_option("--integrator", o.integrator, integrator_help)
-        ->capture_default_str()
-        ->check(CLI::IsMember(integrator_list));
-    cmd->add_option("--sampler", o.sampler, "Pixel sampler")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"independent", "stratified", "sobol", "zsobol", "tabled-sobol"}));
-    cmd->add_option("--filter", o.filter, "Pixel reconstruction filter")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"box", "gaussian", "blackman-harris"}));
-    cmd->add_option("--accel", o.accel, "Ray intersection accelerator")
-        ->capture_default_str()
-        ->check(CLI::IsMember(
-            {"embree", "bvh", "bvh-sah", "bvh-median", "bvh-center", "grid"}));
-    cmd->add_option("--strategy", o.strategy,
-                    "path: estimators for area and environment light: mis (both, combined), "
-                    "bsdf (BSDF sampling only) or light (light sampling only)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"mis", "bsdf", "light"}));
-    cmd->add_option("--light-sampler", o.light_sampler,
-                    "How next-event estimation chooses a light: uniform, power (by emitted "
-                    "power), bvh (a light BVH weighing distance, orientation and power) or "
-                    "auto (bvh from 64 emitters and punctual lights on, else power)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"uniform", "power", "bvh", "auto"}));
-    cmd->add_option("--triangle-sampling", o.triangle_sampling,
-                    "Points on emissive triangles: solid-angle (spherical triangles, cosine "
-                    "warped) or area (uniform by area)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"area", "solid-angle"}));
-    cmd->add_option("--microfacet", o.microfacet,
-                    "Microfacet distribution of glTF materials: ggx (the spec's) or beckmann")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"ggx", "beckmann"}));
-    cmd->add_option("--gltf-layering", o.gltf_layering,
-                    "Diffuse base of glTF dielectrics: albedo-scaled (energy-conserving) or "
-                    "spec (Appendix B's fresnel_mix as written; gains energy at grazing angles)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"albedo-scaled", "spec"}));
-    cmd->add_option("--light-samples", o.light_samples,
-                    "direct: shadow rays per shading point")
-        ->capture_default_str()
-        ->check(CLI::Range(0, 1 << 16));
-    cmd->add_option("--bsdf-samples", o.bsdf_samples, "direct: BSDF samples per shading point")
-        ->capture_default_str()
-        ->check(CLI::Range(0, 1 << 16));
-    cmd->add_option("--max-depth", o.max_depth,
-                    "path: maximum bounces; basic/direct: maximum specular recursion")
-        ->capture_default_str()
-        ->check(CLI::Range(0, 1024));
-    cmd->add_option("--env", o.env,
-                    "Environment: an equirectangular HDR/EXR image (+Y up), importance-sampled")
-        ->check(CLI::ExistingFile);
-    cmd->add_option("--env-color", o.env_color, "Environment: constant radiance R G B")
-        ->expected(3);
-    cmd->add_option("--env-intensity", o.env_intensity, "Scale of the environment radiance")
-        ->capture_default_str();
-    cmd->add_option("--env-rotation", o.env_rotation,
-                    "Rotation of the environment image about +Y, in degrees")
-        ->capture_default_str();
-    cmd->add_option("--env-sampling", o.env_sampling,
-                    "Environment image's light samples: full (by luminance), compensated "
-                    "(luminance above the map's mean: the BSDF samples MIS pairs them with "
-                    "find the rest; needs such pairs) or auto (compensated where the "
-                    "integrator pairs them)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"auto", "full", "compensated"}));
-    auto* aperture = cmd->add_option("--aperture-radius", o.aperture_radius,
-                                     "Depth of field: lens aperture radius in scene units "
-                                     "(0: pinhole, whatever the file says)")
-                         ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--fstop", o.fstop,
-                    "Depth of field: f-number (aperture from the focal length of the camera's "
-                    "field of view and its sensor, 24 mm high unless the file says otherwise)")
-        ->check(CLI::PositiveNumber)
-        ->excludes(aperture);
-    cmd->add_option("--focus-distance", o.focus_distance,
-                    "Depth of field: distance of the plane of focus along the view axis")
-        ->check(CLI::PositiveNumber);
-    cmd->add_option("--focus-on", o.focus_on,
-                    "Depth of field: focus on the surface seen through pixel X Y")
-        ->expected(2);
-    cmd->add_option("--aperture-blades", o.aperture_blades,
-                    "Depth of field: aperture blades (0: circular, >= 3: polygonal bokeh)")
-        ->check(CLI::Range(0, 64));
-    cmd->add_option("--default-light", o.default_light,
-                    "Default key and fill lights and a dim environment: auto (when the scene "
-                    "has no lights, no environment and no emitters bright and large enough to "
-                    "light it), on (always), off (never)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"auto", "on", "off"}));
-    cmd->add_flag_callback(
-        "--no-default-light", [&o] { o.default_light = "off"; }, "Same as --default-light off");
-    cmd->add_flag("--no-file-lights", o.no_file_lights,
-                  "Leave out the file's punctual lights (KHR_lights_punctual), so that --env or "
-                  "--env-color can be the only light; emissive surfaces still emit");
-    cmd->add_option("--light-units", o.light_units,
-                    "KHR_lights_punctual intensities: photometric (candela and lux, as the "
-                    "spec says, converted at 683 lm/W) or radiometric (read as W/sr and W/m^2)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"photometric", "radiometric"}));
-    cmd->add_flag("--strict", o.strict,
-                  "Treat every scene warning (an undecodable texture, out-of-spec data, an "
-                  "ignored extension) as an error");
-    cmd->add_option("--max-texture-pixels", o.max_texture_pixels,
-                    "Refuse (as undecodable) texture images whose header claims more pixels")
-        ->capture_default_str()
-        ->check(CLI::Range(uint64_t(1), uint64_t(1) << 40));
-    add_sampling_options(cmd, o);
-}
 
 namespace {
 
@@ -236,19 +97,12 @@ double since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-}  // namespace
-
-RenderContext SceneSetup::context() const {
-    return RenderContext{scene, *accel, *lights, scene_has_alpha(scene), materials};
-}
-
-std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std::string& path) {
-    auto s = std::make_unique<SceneSetup>();
-    s->path = path;
-    s->color = std::make_unique<ColorPipeline>(o.color);
-    auto t0 = Clock::now();
+// Reads the file into s.scene as the options say, and reports what its textures cost.
+GltfLoadStats load_scene(const RenderCommandOptions& o, SceneSetup& s) {
+    const std::string& path = s.path;
+    const auto t0 = Clock::now();
     GltfLoadOptions load;
-    load.rec709_to_working = s->color->rec709_to_working();
+    load.rec709_to_working = s.color->rec709_to_working();
     load.variant = o.variant;
     load.strict = o.strict;
     load.max_texture_pixels = o.max_texture_pixels;
@@ -265,15 +119,15 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
         throw SceneError(path + ": " + e.what());
     }
     GltfLoadStats load_stats;
-    s->scene = load_gltf(path, load, &load_stats);
-    s->load_seconds = since(t0);
-    Scene& scene = s->scene;
+    s.scene = load_gltf(path, load, &load_stats);
+    s.load_seconds = since(t0);
+    Scene& scene = s.scene;
     if (o.no_file_lights && !scene.lights.empty()) {
         LOG_INFO(path << ": " << scene.lights.size()
                       << " punctual light(s) of the file left out (--no-file-lights)");
         scene.lights.clear();
     }
-    s->file_lights = scene.lights.size();
+    s.file_lights = scene.lights.size();
     if (!scene.images.empty()) {
         // What the texture store costs (docs/performance.md), pyramids included.
         double bytes = 0, texels = 0;
@@ -285,8 +139,12 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
                       << " Mtexels, " << bytes / (1 << 20) << " MiB with mipmaps ("
                       << bytes / texels << " B/texel)");
     }
+    return load_stats;
+}
 
-    // Image size: what the user asked, completed from the camera's aspect ratio.
+// Image size: what the user asked, completed from the camera's aspect ratio.
+void choose_camera_and_size(const RenderCommandOptions& o, SceneSetup& s) {
+    const Scene& scene = s.scene;
     const CameraDesc* file_cam = nullptr;
     if (!o.camera.empty())
         file_cam = find_camera(scene, o.camera);
@@ -297,11 +155,15 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
                        ? file_cam->xmag / file_cam->ymag
                        : 4.0f / 3.0f;
     if (o.width && o.height) aspect = float(o.width) / float(o.height);
-    s->width = o.width ? o.width
-                       : (o.height ? std::max(1, int(std::lround(o.height * aspect))) : 640);
-    s->height = o.height ? o.height : std::max(1, int(std::lround(s->width / aspect)));
-    s->camera_desc = file_cam ? *file_cam : default_camera(scene.bounds(), aspect);
-    if (!file_cam) LOG_INFO(path << ": no camera in the file; using one that frames the scene");
+    s.width = o.width ? o.width
+                      : (o.height ? std::max(1, int(std::lround(o.height * aspect))) : 640);
+    s.height = o.height ? o.height : std::max(1, int(std::lround(s.width / aspect)));
+    s.camera_desc = file_cam ? *file_cam : default_camera(scene.bounds(), aspect);
+    if (!file_cam)
+        LOG_INFO(s.path << ": no camera in the file; using one that frames the scene");
+}
+
+void make_integrator_for(const RenderCommandOptions& o, SceneSetup& s) {
     IntegratorOptions iopt;
     iopt.max_depth = o.max_depth;
     iopt.strategy = parse_light_strategy(o.strategy);
@@ -310,9 +172,21 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     iopt.clamp_direct = o.clamp_direct;
     iopt.clamp_indirect = o.clamp_indirect;
     iopt.regularize_roughness = o.regularize;
-    // Made before the lights: how the environment is sampled depends on it.
-    s->integrator = make_integrator(o.integrator, iopt);
-    const bool paired = s->integrator->pairs_light_and_bsdf_samples();
+    s.integrator = make_integrator(o.integrator, iopt);
+}
+
+// What setup_lights decided that the view check after the accelerator needs again.
+struct LightingSetup {
+    DefaultLightMode mode = DefaultLightMode::Auto;
+    LightSetOptions options;
+};
+
+// The environment, the default lights when the scene needs them, and the light set.
+// Runs after the integrator: how the environment is sampled depends on it.
+LightingSetup setup_lights(const RenderCommandOptions& o, SceneSetup& s) {
+    const std::string& path = s.path;
+    Scene& scene = s.scene;
+    const bool paired = s.integrator->pairs_light_and_bsdf_samples();
     if (o.env_sampling == "compensated" && !paired)
         throw SceneError(path +
                          ": --env-sampling compensated needs every light sample paired "
@@ -321,37 +195,40 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
                          "the image would be too dark otherwise");
     const bool compensate = o.env_sampling == "compensated" || (o.env_sampling == "auto" && paired);
     std::unique_ptr<EnvironmentLight> env = make_environment(
-        o, scene, s->color->rec709_to_working(),
+        o, scene, s.color->rec709_to_working(),
         compensate ? EnvironmentSampling::MisCompensated : EnvironmentSampling::Full);
-    DefaultLightMode mode = DefaultLightMode::Auto;
+    LightingSetup result;
     try {
-        mode = parse_default_light_mode(o.default_light);
+        result.mode = parse_default_light_mode(o.default_light);
     } catch (const std::invalid_argument& e) {
         throw SceneError(path + ": " + e.what());
     }
-    const LightingChoice lighting = choose_lighting(mode, scene, env != nullptr);
-    s->default_lights = lighting.add_defaults;
+    const LightingChoice lighting = choose_lighting(result.mode, scene, env != nullptr);
+    s.default_lights = lighting.add_defaults;
     LOG_INFO(path << ": lighting: " << lighting.reason);
     if (lighting.add_defaults) {
-        std::unique_ptr<EnvironmentLight> dim = add_default_lights(scene, s->camera_desc);
+        std::unique_ptr<EnvironmentLight> dim = add_default_lights(scene, s.camera_desc);
         if (!env) env = std::move(dim);
     }
-    LightSetOptions light_options;
     try {
-        light_options.sampler = parse_light_sampler(o.light_sampler);
-        light_options.triangles = parse_triangle_sampling(o.triangle_sampling);
+        result.options.sampler = parse_light_sampler(o.light_sampler);
+        result.options.triangles = parse_triangle_sampling(o.triangle_sampling);
     } catch (const std::invalid_argument& e) {
         throw SceneError(path + ": " + e.what());
     }
-    s->lights = std::make_unique<LightSet>(scene, std::move(env), light_options);
+    s.lights = std::make_unique<LightSet>(scene, std::move(env), result.options);
+    return result;
+}
 
-    t0 = Clock::now();
+// Builds the accelerator and reports where load and build time and memory go, for big
+// scenes (docs/performance.md).
+void build_accel(const RenderCommandOptions& o, const GltfLoadStats& ls, SceneSetup& s) {
+    const Scene& scene = s.scene;
+    const auto t0 = Clock::now();
     const std::clock_t build_cpu = std::clock();
-    s->accel = make_accel(parse_accel_type(o.accel), scene);
-    s->build_seconds = since(t0);
-    // Where load and build time and memory go, for big scenes (docs/performance.md).
-    const AccelStats as = s->accel->stats();
-    const GltfLoadStats& ls = load_stats;
+    s.accel = make_accel(parse_accel_type(o.accel), scene);
+    s.build_seconds = since(t0);
+    const AccelStats as = s.accel->stats();
     char line[400];
     std::snprintf(line, sizeof(line),
                   "parse %.2f s (cpu %.2f), meshes %.2f (%.2f), materials %.2f (%.2f), nodes "
@@ -359,24 +236,43 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
                   "%zu images, %s %s; peak memory %s",
                   ls.parse.seconds, ls.parse.cpu_seconds, ls.meshes.seconds, ls.meshes.cpu_seconds,
                   ls.materials.seconds, ls.materials.cpu_seconds, ls.nodes.seconds,
-                  ls.nodes.cpu_seconds, as.name.c_str(), s->build_seconds,
+                  ls.nodes.cpu_seconds, as.name.c_str(), s.build_seconds,
                   double(std::clock() - build_cpu) / CLOCKS_PER_SEC, unique_triangle_count(scene),
                   format_bytes(mesh_memory_bytes(scene)).c_str(), scene.images.size(),
                   as.name.c_str(), format_bytes(as.memory_bytes).c_str(),
                   format_bytes(peak_memory_bytes()).c_str());
-    LOG_INFO(path << ": load and build: " << line);
+    LOG_INFO(s.path << ": load and build: " << line);
+}
 
-    apply_lens_options(o, path, s->width, s->height, scene, *s->accel, s->camera_desc);
+}  // namespace
+
+RenderContext SceneSetup::context() const {
+    return RenderContext{scene, *accel, *lights, scene_has_alpha(scene), materials};
+}
+
+std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std::string& path) {
+    auto s = std::make_unique<SceneSetup>();
+    s->path = path;
+    s->color = std::make_unique<ColorPipeline>(o.color);
+    const GltfLoadStats load_stats = load_scene(o, *s);
+    choose_camera_and_size(o, *s);
+    make_integrator_for(o, *s);
+    const LightingSetup lighting = setup_lights(o, *s);
+    build_accel(o, load_stats, *s);
+
+    apply_lens_options(o, path, s->width, s->height, s->scene, *s->accel, s->camera_desc);
 
     s->camera = make_camera(s->camera_desc, s->width, s->height);
     s->materials.gltf_distribution =
         o.microfacet == "beckmann" ? MicrofacetType::Beckmann : MicrofacetType::Ggx;
     s->materials.gltf_layering =
         o.gltf_layering == "spec" ? GltfLayering::Spec : GltfLayering::AlbedoScaled;
-    // What the camera sees decides too: the file's lights can pass the rule above and
-    // still leave the view dark (a filament inside its lamp, watts written as candela).
-    if (mode == DefaultLightMode::Auto && !s->default_lights && !s->lights->environment())
-        add_default_lights_if_view_dark(*s, o, light_options);
+    // What the camera sees decides too: the file's lights can pass the rule in
+    // setup_lights and still leave the view dark (a filament inside its lamp, watts
+    // written as candela).
+    if (lighting.mode == DefaultLightMode::Auto && !s->default_lights &&
+        !s->lights->environment())
+        add_default_lights_if_view_dark(*s, o, lighting.options);
     return s;
 }
 

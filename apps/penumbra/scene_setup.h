@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "apps/penumbra/image_options.h"
 #include "apps/penumbra/render_command.h"
 #include "core/accel/accel.h"
 #include "core/camera/camera.h"
@@ -17,10 +18,6 @@
 #include "io/color.h"
 
 namespace penumbra {
-
-// The options that decide what an image looks like (size, samples, camera, integrator,
-// sampler, lights, lens), for `render`, `converge` and converge's --config strings.
-void add_image_options(CLI::App* cmd, RenderCommandOptions& o);
 
 struct SceneSetup {
     std::string path;

@@ -50,30 +50,10 @@ Decades decades(double lo, double hi) {
     return d;
 }
 
-}  // namespace
-
-std::string log_log_plot_svg(const std::vector<PlotSeries>& series, const PlotLabels& labels) {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    double x0 = inf, x1 = -inf, y0 = inf, y1 = -inf;
-    for (const PlotSeries& s : series)
-        for (size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
-            if (s.x[i] > 0 && s.y[i] > 0 && std::isfinite(s.x[i]) && std::isfinite(s.y[i])) {
-                x0 = std::min(x0, s.x[i]), x1 = std::max(x1, s.x[i]);
-                y0 = std::min(y0, s.y[i]), y1 = std::max(y1, s.y[i]);
-            }
-    const Decades dx = decades(x0, x1), dy = decades(y0, y1);
-    auto px = [&](double x) { return kLeft + dx.map(std::log10(x), kPlotW); };
-    auto py = [&](double y) { return kTop + kPlotH - dy.map(std::log10(y), kPlotH); };
-
-    std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-    svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(kWidth) + "\" height=\"" +
-           num(kHeight) + "\" viewBox=\"0 0 " + num(kWidth) + " " + num(kHeight) +
-           "\" font-family=\"sans-serif\" font-size=\"12\">\n";
-    svg += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    svg += "<text x=\"" + num(kLeft + kPlotW / 2) + "\" y=\"24\" text-anchor=\"middle\" "
-           "font-size=\"15\">" + escape(labels.title) + "</text>\n";
-
-    // Grid and ticks: a labelled line per decade, short ticks at 2..9 times it.
+// Grid and ticks: a labelled line per decade, short ticks at 2..9 times it; the frame
+// and the axis labels.
+std::string grid_and_axes(const Decades& dx, const Decades& dy, const PlotLabels& labels) {
+    std::string svg;
     svg += "<g stroke=\"#ddd\">\n";
     for (int k = dx.lo; k <= dx.hi; ++k) {
         const double x = kLeft + dx.map(k, kPlotW);
@@ -113,18 +93,13 @@ std::string log_log_plot_svg(const std::vector<PlotSeries>& series, const PlotLa
     svg += "<text transform=\"translate(22," + num(kTop + kPlotH / 2) +
            ") rotate(-90)\" text-anchor=\"middle\">" + escape(labels.y) + "</text>\n";
 
-    // Clip the guide (it may leave the data range); series points are inside by design.
-    svg += "<clipPath id=\"plot\"><rect x=\"" + num(kLeft) + "\" y=\"" + num(kTop) +
-           "\" width=\"" + num(kPlotW) + "\" height=\"" + num(kPlotH) + "\"/></clipPath>\n";
-    if (std::isfinite(x0) && x1 > x0) {
-        // Through the first series' first point, falling one decade per decade of x.
-        const PlotSeries& s = series.front();
-        const double gx = s.x.empty() ? x0 : s.x[0], gy = s.y.empty() ? y1 : s.y[0];
-        svg += "<line class=\"guide\" clip-path=\"url(#plot)\" x1=\"" + num(px(gx)) +
-               "\" y1=\"" + num(py(gy)) + "\" x2=\"" + num(px(x1 * 10)) + "\" y2=\"" +
-               num(py(gy * gx / (x1 * 10))) +
-               "\" stroke=\"#888\" stroke-dasharray=\"6,4\"/>\n";
-    }
+    return svg;
+}
+
+// Each series as a line with markers, its legend entry, and the guide's.
+template <class Px, class Py>
+std::string series_and_legend(const std::vector<PlotSeries>& series, Px px, Py py) {
+    std::string svg;
     for (size_t i = 0; i < series.size(); ++i) {
         const PlotSeries& s = series[i];
         const char* color = kColors[i % (sizeof kColors / sizeof *kColors)];
@@ -151,6 +126,47 @@ std::string log_log_plot_svg(const std::vector<PlotSeries>& series, const PlotLa
            num(kLeft + kPlotW + 40) + "\" y2=\"" + num(ly - 4) +
            "\" stroke=\"#888\" stroke-dasharray=\"6,4\"/><text x=\"" +
            num(kLeft + kPlotW + 46) + "\" y=\"" + num(ly) + "\">slope -1</text>\n";
+    return svg;
+}
+
+}  // namespace
+
+std::string log_log_plot_svg(const std::vector<PlotSeries>& series, const PlotLabels& labels) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    double x0 = inf, x1 = -inf, y0 = inf, y1 = -inf;
+    for (const PlotSeries& s : series)
+        for (size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
+            if (s.x[i] > 0 && s.y[i] > 0 && std::isfinite(s.x[i]) && std::isfinite(s.y[i])) {
+                x0 = std::min(x0, s.x[i]), x1 = std::max(x1, s.x[i]);
+                y0 = std::min(y0, s.y[i]), y1 = std::max(y1, s.y[i]);
+            }
+    const Decades dx = decades(x0, x1), dy = decades(y0, y1);
+    auto px = [&](double x) { return kLeft + dx.map(std::log10(x), kPlotW); };
+    auto py = [&](double y) { return kTop + kPlotH - dy.map(std::log10(y), kPlotH); };
+
+    std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(kWidth) + "\" height=\"" +
+           num(kHeight) + "\" viewBox=\"0 0 " + num(kWidth) + " " + num(kHeight) +
+           "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+    svg += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    svg += "<text x=\"" + num(kLeft + kPlotW / 2) + "\" y=\"24\" text-anchor=\"middle\" "
+           "font-size=\"15\">" + escape(labels.title) + "</text>\n";
+
+    svg += grid_and_axes(dx, dy, labels);
+
+    // Clip the guide (it may leave the data range); series points are inside by design.
+    svg += "<clipPath id=\"plot\"><rect x=\"" + num(kLeft) + "\" y=\"" + num(kTop) +
+           "\" width=\"" + num(kPlotW) + "\" height=\"" + num(kPlotH) + "\"/></clipPath>\n";
+    if (std::isfinite(x0) && x1 > x0) {
+        // Through the first series' first point, falling one decade per decade of x.
+        const PlotSeries& s = series.front();
+        const double gx = s.x.empty() ? x0 : s.x[0], gy = s.y.empty() ? y1 : s.y[0];
+        svg += "<line class=\"guide\" clip-path=\"url(#plot)\" x1=\"" + num(px(gx)) +
+               "\" y1=\"" + num(py(gy)) + "\" x2=\"" + num(px(x1 * 10)) + "\" y2=\"" +
+               num(py(gy * gx / (x1 * 10))) +
+               "\" stroke=\"#888\" stroke-dasharray=\"6,4\"/>\n";
+    }
+    svg += series_and_legend(series, px, py);
     svg += "</svg>\n";
     return svg;
 }
