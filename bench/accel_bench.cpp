@@ -13,7 +13,7 @@
 #include "core/accel/embree_accel.h"
 #include "core/sampling/rng.h"
 #include "core/sampling/warp.h"
-#include "io/gltf_loader.h"
+#include "io/gltf/gltf_loader.h"
 
 namespace penumbra {
 namespace {

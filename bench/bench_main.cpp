@@ -11,7 +11,7 @@
 #include "core/sampling/rng.h"
 #include "core/sampling/warp.h"
 #include "integrators/render.h"
-#include "io/gltf_loader.h"
+#include "io/gltf/gltf_loader.h"
 
 namespace penumbra {
 namespace {

@@ -14,7 +14,7 @@
 #include "core/lights/spot_light.h"
 #include "core/sampling/rng.h"
 #include "core/sampling/warp.h"
-#include "io/gltf_loader.h"
+#include "io/gltf/gltf_loader.h"
 
 namespace penumbra {
 namespace {

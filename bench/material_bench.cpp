@@ -6,13 +6,13 @@
 
 #include "core/sampling/rng.h"
 #include "core/sampling/warp.h"
-#include "materials/conductor.h"
-#include "materials/cook_torrance.h"
-#include "materials/dielectric.h"
+#include "materials/lobes/conductor.h"
+#include "materials/lobes/cook_torrance.h"
+#include "materials/lobes/dielectric.h"
 #include "materials/gltf_transmission_bsdf.h"
-#include "materials/lambertian.h"
+#include "materials/lobes/lambertian.h"
 #include "materials/metal_rough_bsdf.h"
-#include "materials/oren_nayar.h"
+#include "materials/lobes/oren_nayar.h"
 
 namespace penumbra {
 namespace {

@@ -8,7 +8,7 @@
 #include "core/film/filter.h"
 #include "core/sampling/rng.h"
 #include "core/sampling/sampler.h"
-#include "materials/specular_albedo.h"
+#include "materials/albedo/specular_albedo.h"
 
 namespace penumbra {
 namespace {

@@ -17,7 +17,7 @@ double srgb_decode(double v) {
     // IEC 61966-2-1's 2.4 power segment with offset 0.055, joined to the linear toe with
     // a continuous slope (1 / 12.923 rather than the standard's rounded 1 / 12.92), as
     // the built-in OCIO config's sRGB space evaluates it (OCIO's MonCurve), so textures
-    // decode as io/color.h does (docs/conventions.md: one definition of the curve).
+    // decode as io/color/color.h does (docs/conventions.md: one definition of the curve).
     constexpr double g = 2.4, o = 0.055, brk = o / (g - 1);
     static const double slope = g / (1 + o) * std::pow(o * g / ((g - 1) * (1 + o)), g - 1);
     return v <= brk ? v * slope : std::pow((v + o) / (1 + o), g);

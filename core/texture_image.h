@@ -59,7 +59,7 @@ public:
     size_t bytes() const;
     size_t texel_count() const { return m_levels.empty() ? 0 : size_t(width()) * height(); }
 
-    // The scene's working-space conversion for colour textures (io/scene_color.cpp):
+    // The scene's working-space conversion for colour textures (io/color/scene_color.cpp):
     // applied to RGB after filtering, which is linear, so it commutes with the filter.
     void set_color_matrix(const Mat3& m) { m_matrix = m; }
     const std::optional<Mat3>& color_matrix() const { return m_matrix; }

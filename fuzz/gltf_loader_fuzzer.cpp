@@ -20,7 +20,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
-#include "io/gltf_loader.h"
+#include "io/gltf/gltf_loader.h"
 
 namespace {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "materials/dispersion.h"
+#include "materials/lobes/dispersion.h"
 
 namespace penumbra {
 

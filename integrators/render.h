@@ -30,7 +30,7 @@ struct RenderOptions {
     bool progress = true;
     std::string label = "render";
     // Scene time in seconds of the shutter's opening, for the record: the loader has
-    // already posed the scene at it (io/gltf_loader.h), and the render loop does not read it.
+    // already posed the scene at it (io/gltf/gltf_loader.h), and the render loop does not read it.
     double time = 0;
     // Seconds for the whole image, 0: none. No pass starts that is predicted to end
     // after it; the first pass (1 spp) always runs.

@@ -9,7 +9,7 @@
 
 #include "core/math/frame.h"
 #include "materials/bsdf.h"
-#include "materials/lambertian.h"
+#include "materials/lobes/lambertian.h"
 
 namespace penumbra {
 

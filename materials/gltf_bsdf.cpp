@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "materials/sheen_albedo.h"
+#include "materials/albedo/sheen_albedo.h"
 
 namespace penumbra {
 

@@ -7,11 +7,11 @@
 #include <optional>
 #include <variant>
 
-#include "materials/clearcoat.h"
+#include "materials/lobes/clearcoat.h"
 #include "materials/gltf_diffuse_transmission_bsdf.h"
 #include "materials/gltf_transmission_bsdf.h"
 #include "materials/metal_rough_bsdf.h"
-#include "materials/sheen.h"
+#include "materials/lobes/sheen.h"
 
 namespace penumbra {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "materials/fresnel.h"
+#include "materials/lobes/fresnel.h"
 
 namespace penumbra {
 

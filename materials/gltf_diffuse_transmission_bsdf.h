@@ -5,10 +5,10 @@
 
 #include <variant>
 
-#include "materials/dielectric.h"
-#include "materials/diffuse_transmission.h"
+#include "materials/lobes/dielectric.h"
+#include "materials/lobes/diffuse_transmission.h"
 #include "materials/metal_rough_bsdf.h"
-#include "materials/thin_dielectric.h"
+#include "materials/lobes/thin_dielectric.h"
 
 namespace penumbra {
 

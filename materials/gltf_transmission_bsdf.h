@@ -5,9 +5,9 @@
 
 #include <variant>
 
-#include "materials/dielectric.h"
+#include "materials/lobes/dielectric.h"
 #include "materials/metal_rough_bsdf.h"
-#include "materials/thin_dielectric.h"
+#include "materials/lobes/thin_dielectric.h"
 
 namespace penumbra {
 

@@ -8,8 +8,8 @@
 #include "core/scene/coverage.h"
 #include "core/scene/emission.h"
 #include "materials/bsdf_prototypes.h"
-#include "materials/dispersion.h"
-#include "materials/fresnel.h"
+#include "materials/lobes/dispersion.h"
+#include "materials/lobes/fresnel.h"
 #include "materials/normal_map.h"
 #include "materials/specular_inputs.h"
 

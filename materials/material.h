@@ -8,14 +8,14 @@
 #include "core/math/frame.h"
 #include "core/scene/scene.h"
 #include "core/surface_point.h"
-#include "materials/conductor.h"
-#include "materials/cook_torrance.h"
-#include "materials/dielectric.h"
+#include "materials/lobes/conductor.h"
+#include "materials/lobes/cook_torrance.h"
+#include "materials/lobes/dielectric.h"
 #include "materials/gltf_bsdf.h"
 #include "materials/gltf_transmission_bsdf.h"
-#include "materials/lambertian.h"
+#include "materials/lobes/lambertian.h"
 #include "materials/metal_rough_bsdf.h"
-#include "materials/oren_nayar.h"
+#include "materials/lobes/oren_nayar.h"
 
 namespace penumbra {
 

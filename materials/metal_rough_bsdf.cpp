@@ -6,7 +6,7 @@
 #include <cstring>
 
 #include "core/sampling/warp.h"
-#include "materials/fresnel.h"
+#include "materials/lobes/fresnel.h"
 
 namespace penumbra {
 

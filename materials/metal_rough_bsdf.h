@@ -7,11 +7,11 @@
 #include <array>
 #include <cstdint>
 
-#include "materials/anisotropy_albedo.h"
+#include "materials/albedo/anisotropy_albedo.h"
 #include "materials/bsdf.h"
-#include "materials/microfacet.h"
-#include "materials/specular_albedo.h"
-#include "materials/thin_film.h"
+#include "materials/lobes/microfacet.h"
+#include "materials/albedo/specular_albedo.h"
+#include "materials/lobes/thin_film.h"
 
 namespace penumbra {
 

@@ -21,7 +21,7 @@ if [ "${1:-}" = "--test" ]; then
         # and libFuzzer runtimes, and llvm-symbolizer for readable reports.
         clang libclang-rt-14-dev llvm-14
         # A real studio OCIO config (blender-data's config.ocio) and Blender itself, whose
-        # compositor must read our AOV EXRs (tests/io/color_test.cpp,
+        # compositor must read our AOV EXRs (tests/io/color/color_test.cpp,
         # tests/apps/blender_roundtrip_test.cpp); its glTF importer needs numpy
         # (scripts/crosscheck/).
         blender blender-data python3-numpy

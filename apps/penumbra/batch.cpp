@@ -14,9 +14,9 @@
 #include "core/progress.h"
 #include "core/sampling/sampler.h"
 #include "integrators/integrator.h"
-#include "io/image_writer.h"
-#include "io/job_file.h"
-#include "io/render_output.h"
+#include "io/image/image_writer.h"
+#include "job/job_file.h"
+#include "job/render_output.h"
 
 namespace penumbra {
 

@@ -1,6 +1,6 @@
 // Denoising a finished render: the denoiser run on the film's buffers (or, in the farm's
 // merge, on the input assembled from row bands) with the render's thread count, its
-// result in the form write_render takes (io/render_writer.h). Shared by `render`,
+// result in the form write_render takes (io/image/render_writer.h). Shared by `render`,
 // `converge` and `farm merge`.
 #pragma once
 
@@ -10,7 +10,7 @@
 
 #include "core/denoise/nfor_denoiser.h"
 #include "core/film/film.h"
-#include "io/render_writer.h"
+#include "io/image/render_writer.h"
 
 namespace penumbra {
 

@@ -5,9 +5,9 @@
 #include <exception>
 #include <iostream>
 
-#include "apps/penumbra/check_accel_command.h"
-#include "apps/penumbra/converge_command.h"
-#include "apps/penumbra/farm_command.h"
+#include "apps/penumbra/study/check_accel_command.h"
+#include "apps/penumbra/study/converge_command.h"
+#include "apps/penumbra/farm/farm_command.h"
 #include "apps/penumbra/render_command.h"
 #include "core/log.h"
 

@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "core/film/aov.h"
-#include "io/image_writer.h"
+#include "io/image/image_writer.h"
 
 namespace penumbra {
 

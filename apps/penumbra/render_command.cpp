@@ -21,10 +21,10 @@
 #include "core/log.h"
 #include "core/progress.h"
 #include "integrators/render.h"
-#include "io/checkpoint.h"
-#include "io/image_writer.h"
-#include "io/render_output.h"
-#include "io/render_writer.h"
+#include "job/checkpoint.h"
+#include "io/image/image_writer.h"
+#include "job/render_output.h"
+#include "io/image/render_writer.h"
 
 namespace penumbra {
 
@@ -209,7 +209,7 @@ RenderFiles render_files_for(const RenderCommandOptions& o, const std::string& o
 
 // Denoised after the render, before anything is written. A farm band is not: the
 // denoiser's windows reach across band edges, so the band writes the denoiser's input
-// and the merge denoises the assembled image (apps/penumbra/farm_merge.cpp).
+// and the merge denoises the assembled image (apps/penumbra/farm/farm_merge.cpp).
 std::unique_ptr<DenoiseStep> denoise_job(const BatchJob& job, const Film& film, uint32_t spp,
                                          const std::string& output) {
     if (!job.options.denoise || job.band >= 0) return nullptr;

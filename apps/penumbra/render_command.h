@@ -7,9 +7,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "io/color.h"
-#include "io/image_reader.h"
-#include "io/timeline.h"
+#include "io/color/color.h"
+#include "io/image/image_reader.h"
+#include "job/timeline.h"
 
 namespace penumbra {
 
@@ -75,7 +75,7 @@ struct RenderCommandOptions {
     // --denoise: the EXR's RGB is denoised after rendering; the samples then form two
     // independently seeded halves, as the error AOV's (sampling_options.cpp).
     bool denoise = false;
-    // Checkpoints (io/checkpoint.h): written on an interrupt and every this many seconds
+    // Checkpoints (job/checkpoint.h): written on an interrupt and every this many seconds
     // between passes; 0: only on an interrupt.
     double checkpoint_interval = 300;
     int bands = 1;  // the job key "bands": row bands per image on the farm

@@ -9,7 +9,7 @@
 #include "apps/penumbra/render_command.h"
 #include "apps/penumbra/scene_setup.h"
 #include "integrators/render.h"
-#include "io/image_writer.h"
+#include "io/image/image_writer.h"
 
 namespace penumbra {
 

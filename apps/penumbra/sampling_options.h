@@ -7,7 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/penumbra/render_command.h"
-#include "io/image_writer.h"
+#include "io/image/image_writer.h"
 
 namespace penumbra {
 

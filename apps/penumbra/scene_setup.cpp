@@ -18,9 +18,9 @@
 #include "core/log.h"
 #include "core/progress.h"
 #include "core/scene/scene_stats.h"
-#include "io/gltf_loader.h"
-#include "io/image_reader.h"
-#include "io/scene_color.h"
+#include "io/gltf/gltf_loader.h"
+#include "io/image/image_reader.h"
+#include "io/color/scene_color.h"
 #include "materials/material.h"
 
 namespace penumbra {

@@ -15,7 +15,7 @@
 #include "core/lights/light_set.h"
 #include "core/scene/scene.h"
 #include "integrators/render.h"
-#include "io/color.h"
+#include "io/color/color.h"
 
 namespace penumbra {
 

@@ -1,10 +1,10 @@
 // The timeline options of `render` and `check-accel`: --time, --shutter-open and
-// --shutter-close, --frame, --fps and --shutter (resolved by io/timeline.h).
+// --shutter-close, --frame, --fps and --shutter (resolved by job/timeline.h).
 #pragma once
 
 #include <CLI/CLI.hpp>
 
-#include "io/timeline.h"
+#include "job/timeline.h"
 
 namespace penumbra {
 

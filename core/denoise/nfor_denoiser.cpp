@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/convergence.h"
+#include "core/film/image_error.h"
 #include "core/denoise/feature_regression.h"
 #include "core/denoise/firefly_guard.h"
 #include "core/denoise/nl_means.h"
@@ -92,7 +92,7 @@ Planes cross_validated_mse(const Planes& a, const Planes& b, const Planes& fa, c
 }
 
 // Mean over pixels and channels of mse / (reference^2 + epsilon): relMSE as
-// core/convergence.h measures it, with an estimate standing in for the reference; and the
+// core/film/image_error.h measures it, with an estimate standing in for the reference; and the
 // standard error of that mean, from the spread of the pixels' terms.
 struct RelMseEstimate {
     double mean = 0, standard_error = 0;

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/convergence.h"
+#include "core/film/image_error.h"
 #include "core/error.h"
 
 namespace penumbra {

@@ -51,7 +51,7 @@ public:
     DenoiseInput denoise_input() const;
     uint64_t nonfinite_samples() const;
 
-    // Every accumulator as raw bytes, by name, for checkpoints (io/checkpoint.h): a
+    // Every accumulator as raw bytes, by name, for checkpoints (job/checkpoint.h): a
     // buffer added to the film is listed here and so saved and restored with the rest.
     struct Buffer {
         const char* name;

@@ -19,7 +19,7 @@
 #include <string>
 
 #include "core/lights/light_units.h"
-#include "io/gltf_loader.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/cli_process.h"
 #include "support/paths.h"
 

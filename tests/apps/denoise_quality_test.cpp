@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "core/convergence.h"
+#include "core/film/image_error.h"
 #include "support/cli_process.h"
 #include "support/exr_pixels.h"
 #include "support/paths.h"

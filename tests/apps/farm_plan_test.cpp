@@ -1,11 +1,11 @@
 // The farm's plan as plain code (no cluster): work items are a pure function of the job
 // file, bands tile the rows exactly, arrays are cut under MaxArraySize, and task records
 // and --sbatch-args survive their round trips.
-#include "apps/penumbra/farm_plan.h"
+#include "apps/penumbra/farm/farm_plan.h"
 
 #include <gtest/gtest.h>
 
-#include "apps/penumbra/farm_slurm.h"
+#include "apps/penumbra/farm/farm_slurm.h"
 #include "core/error.h"
 #include "support/gltf_builder.h"
 

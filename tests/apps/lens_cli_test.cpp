@@ -12,7 +12,7 @@
 #include <regex>
 #include <sstream>
 
-#include "io/gltf_loader.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/cli_process.h"
 #include "support/gltf_builder.h"
 #include "support/paths.h"

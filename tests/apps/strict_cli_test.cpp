@@ -9,7 +9,7 @@
 #include <iterator>
 #include <string>
 
-#include "io/image_reader.h"
+#include "io/image/image_reader.h"
 #include "support/cli_process.h"
 #include "support/gltf_builder.h"
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "io/image_reader.h"
+#include "io/image/image_reader.h"
 #include "support/cli_process.h"
 #include "support/gltf_builder.h"
 

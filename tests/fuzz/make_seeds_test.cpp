@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "core/error.h"
-#include "io/gltf_loader.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/gltf_builder.h"
 #include "support/paths.h"
 

@@ -14,7 +14,7 @@
 #include "core/lights/point_light.h"
 #include "core/scene/coverage.h"
 #include "integrators/integrator.h"
-#include "support/estimate.h"
+#include "support/statistics/estimate.h"
 #include "support/irradiance.h"
 #include "support/scene_builder.h"
 

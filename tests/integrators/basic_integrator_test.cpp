@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/accel/embree_accel.h"
-#include "io/gltf_loader.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/paths.h"
 #include "support/scene_builder.h"
 

@@ -10,7 +10,7 @@
 
 #include "core/camera/orthographic_camera.h"
 #include "core/lights/directional_light.h"
-#include "io/gltf_loader.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/paths.h"
 #include "support/render_scene.h"
 

@@ -14,7 +14,7 @@
 #include "integrators/denoise_guide.h"
 #include "integrators/first_hit.h"
 #include "integrators/render.h"
-#include "materials/fresnel.h"
+#include "materials/lobes/fresnel.h"
 #include "support/scene_builder.h"
 
 namespace penumbra {

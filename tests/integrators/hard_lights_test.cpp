@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "core/camera/orthographic_camera.h"
-#include "io/gltf_loader.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/paths.h"
 #include "support/render_scene.h"
 #include "support/scene_builder.h"

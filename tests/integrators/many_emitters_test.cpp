@@ -10,7 +10,7 @@
 #include "core/accel/embree_accel.h"
 #include "core/scene/emission.h"
 #include "integrators/integrator.h"
-#include "support/estimate.h"
+#include "support/statistics/estimate.h"
 #include "support/scene_builder.h"
 
 namespace penumbra {

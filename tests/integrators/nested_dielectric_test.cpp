@@ -7,8 +7,8 @@
 
 #include "core/accel/embree_accel.h"
 #include "integrators/path_media.h"
-#include "materials/fresnel.h"
-#include "support/estimate.h"
+#include "materials/lobes/fresnel.h"
+#include "support/statistics/estimate.h"
 #include "support/scene_builder.h"
 
 namespace penumbra {

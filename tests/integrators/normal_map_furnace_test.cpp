@@ -18,7 +18,7 @@
 
 #include "core/camera/orthographic_camera.h"
 #include "integrators/direct_lighting.h"
-#include "support/quadrature.h"
+#include "support/statistics/quadrature.h"
 #include "support/render_scene.h"
 #include "support/scene_builder.h"
 

@@ -9,7 +9,7 @@
 #include "core/accel/embree_accel.h"
 #include "core/lights/point_light.h"
 #include "core/sampling/warp.h"
-#include "support/estimate.h"
+#include "support/statistics/estimate.h"
 #include "support/scene_builder.h"
 
 namespace penumbra {

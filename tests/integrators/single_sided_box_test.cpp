@@ -11,7 +11,7 @@
 #include "core/accel/embree_accel.h"
 #include "core/sampling/warp.h"
 #include "integrators/path_integrator.h"
-#include "support/estimate.h"
+#include "support/statistics/estimate.h"
 #include "support/scene_builder.h"
 
 namespace penumbra {

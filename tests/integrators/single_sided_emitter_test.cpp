@@ -7,8 +7,8 @@
 
 #include "core/accel/embree_accel.h"
 #include "integrators/integrator.h"
-#include "io/gltf_loader.h"
-#include "support/estimate.h"
+#include "io/gltf/gltf_loader.h"
+#include "support/statistics/estimate.h"
 #include "support/gltf_builder.h"
 #include "support/irradiance.h"
 #include "support/scene_builder.h"

@@ -9,8 +9,8 @@
 #include "core/lights/spot_light.h"
 #include "core/sampling/rng.h"
 #include "materials/metal_rough_bsdf.h"
-#include "materials/oren_nayar.h"
-#include "support/bsdf_checks.h"
+#include "materials/lobes/oren_nayar.h"
+#include "support/bsdf/bsdf_checks.h"
 
 namespace penumbra {
 namespace {

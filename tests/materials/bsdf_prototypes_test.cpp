@@ -13,8 +13,8 @@
 
 #include "core/math/frame.h"
 #include "core/sampling/rng.h"
-#include "io/gltf_loader.h"
-#include "support/bsdf_properties.h"
+#include "io/gltf/gltf_loader.h"
+#include "support/bsdf/bsdf_properties.h"
 #include "support/paths.h"
 
 namespace penumbra {

@@ -9,12 +9,12 @@
 #include <memory>
 
 #include "core/sampling/rng.h"
-#include "materials/conductor.h"
-#include "materials/cook_torrance.h"
-#include "materials/dielectric.h"
-#include "materials/lambertian.h"
-#include "materials/oren_nayar.h"
-#include "support/bsdf_properties.h"
+#include "materials/lobes/conductor.h"
+#include "materials/lobes/cook_torrance.h"
+#include "materials/lobes/dielectric.h"
+#include "materials/lobes/lambertian.h"
+#include "materials/lobes/oren_nayar.h"
+#include "support/bsdf/bsdf_properties.h"
 
 namespace penumbra {
 namespace {
@@ -106,7 +106,7 @@ TEST(BsdfRobustness, GrazingAndBelowTheSurfaceStayFiniteAndConserveEnergy) {
 }
 
 // alpha 1e-4 is too narrow to bin over the sphere: the half-vector chi-square bins it
-// by its microfacet normal (support/bsdf_properties.h), down to grazing wo (cos 0.02),
+// by its microfacet normal (support/bsdf/bsdf_properties.h), down to grazing wo (cos 0.02),
 // where that binning would resolve wi's float grid unless it dithers the samples.
 TEST(BsdfRobustness, NarrowestLobesStillFollowTheirPdf) {
     test::BsdfChi2Options o;

@@ -10,8 +10,8 @@
 #include <sstream>
 
 #include "core/camera/perspective_camera.h"
-#include "io/gltf_loader.h"
-#include "materials/thin_dielectric.h"
+#include "io/gltf/gltf_loader.h"
+#include "materials/lobes/thin_dielectric.h"
 #include "support/gltf_builder.h"
 #include "support/render_scene.h"
 

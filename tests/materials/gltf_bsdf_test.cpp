@@ -11,8 +11,8 @@
 #include <sstream>
 #include <string>
 
-#include "materials/sheen_albedo.h"
-#include "support/bsdf_properties.h"
+#include "materials/albedo/sheen_albedo.h"
+#include "support/bsdf/bsdf_properties.h"
 
 namespace penumbra {
 namespace {

@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "materials/gltf_transmission_bsdf.h"
-#include "support/bsdf_properties.h"
+#include "support/bsdf/bsdf_properties.h"
 
 namespace penumbra {
 namespace {

@@ -11,7 +11,7 @@
 #include "core/camera/perspective_camera.h"
 #include "core/lights/directional_light.h"
 #include "integrators/render.h"
-#include "io/image_writer.h"
+#include "io/image/image_writer.h"
 #include "support/scene_builder.h"
 
 namespace penumbra {

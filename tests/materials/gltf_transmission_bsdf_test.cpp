@@ -9,7 +9,7 @@
 
 #include <sstream>
 
-#include "support/bsdf_properties.h"
+#include "support/bsdf/bsdf_properties.h"
 
 namespace penumbra {
 namespace {

@@ -5,9 +5,9 @@
 // pbrSpecularGlossiness and the KHR_materials_specular textures set f0.
 #include <gtest/gtest.h>
 
-#include "materials/fresnel.h"
+#include "materials/lobes/fresnel.h"
 #include "materials/material.h"
-#include "support/bsdf_properties.h"
+#include "support/bsdf/bsdf_properties.h"
 
 namespace penumbra {
 namespace {

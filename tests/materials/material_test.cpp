@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/scene/emission.h"
-#include "support/bsdf_properties.h"
+#include "support/bsdf/bsdf_properties.h"
 
 namespace penumbra {
 namespace {

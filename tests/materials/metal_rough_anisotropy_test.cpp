@@ -1,5 +1,5 @@
 // KHR_materials_anisotropy in the glTF BRDF (materials/metal_rough_bsdf.h) and its
-// albedo table (materials/anisotropy_albedo.h): sampling against the pdf (also lobes
+// albedo table (materials/albedo/anisotropy_albedo.h): sampling against the pdf (also lobes
 // too narrow to bin by direction), sample/eval/pdf agreement, reciprocity, the white
 // furnace, and the spec's limits (strength 0, roughness 1).
 #include <gtest/gtest.h>
@@ -10,11 +10,11 @@
 #include <sstream>
 #include <string>
 
-#include "materials/anisotropy_albedo.h"
+#include "materials/albedo/anisotropy_albedo.h"
 #include "materials/metal_rough_bsdf.h"
-#include "materials/specular_albedo.h"
-#include "support/bsdf_checks.h"
-#include "support/bsdf_properties.h"
+#include "materials/albedo/specular_albedo.h"
+#include "support/bsdf/bsdf_checks.h"
+#include "support/bsdf/bsdf_properties.h"
 
 namespace penumbra {
 namespace {

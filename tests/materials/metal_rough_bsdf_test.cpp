@@ -8,8 +8,8 @@
 #include <string>
 
 #include "core/sampling/warp.h"
-#include "materials/fresnel.h"
-#include "support/bsdf_checks.h"
+#include "materials/lobes/fresnel.h"
+#include "support/bsdf/bsdf_checks.h"
 
 namespace penumbra {
 namespace {

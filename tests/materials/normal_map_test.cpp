@@ -9,7 +9,7 @@
 
 #include "core/sampling/rng.h"
 #include "materials/material.h"
-#include "support/bsdf_properties.h"
+#include "support/bsdf/bsdf_properties.h"
 
 namespace penumbra {
 namespace {

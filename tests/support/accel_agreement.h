@@ -1,5 +1,5 @@
 // Test helper: trace rays through an accelerator and Embree and expect agreement as
-// `penumbra check-accel` defines it (core/accel/accel_check.h).
+// `penumbra check-accel` defines it (study/accel_check.h).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/accel/accel_check.h"
+#include "study/accel_check.h"
 #include "core/accel/embree_accel.h"
 #include "core/camera/default_camera.h"
 

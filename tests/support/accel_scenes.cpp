@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "core/sampling/rng.h"
-#include "io/gltf_loader.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/paths.h"
 #include "support/scene_builder.h"
 

@@ -9,7 +9,7 @@
 #include <iterator>
 #include <string>
 
-#include "io/gltf_loader.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/gltf_builder.h"
 
 namespace penumbra::test {

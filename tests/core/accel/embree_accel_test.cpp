@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/accel/accel_check.h"
+#include "study/accel_check.h"
 #include "core/accel/triangle_intersect.h"
 #include "core/facet.h"
 #include "core/sampling/rng.h"

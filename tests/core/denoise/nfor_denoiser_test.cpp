@@ -10,7 +10,7 @@
 #include <cstring>
 #include <random>
 
-#include "core/convergence.h"
+#include "core/film/image_error.h"
 #include "core/denoise/firefly_guard.h"
 #include "core/denoise/nl_means.h"
 

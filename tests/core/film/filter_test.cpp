@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "support/chi2.h"
+#include "support/statistics/chi2.h"
 
 namespace penumbra {
 namespace {

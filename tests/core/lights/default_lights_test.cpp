@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "core/lights/point_light.h"
-#include "io/gltf_loader.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/paths.h"
 #include "support/scene_builder.h"
 

@@ -12,8 +12,8 @@
 #include "core/lights/point_light.h"
 #include "core/lights/spot_light.h"
 #include "core/scene/emission.h"
-#include "support/chi2.h"
-#include "support/estimate.h"
+#include "support/statistics/chi2.h"
+#include "support/statistics/estimate.h"
 #include "support/scene_builder.h"
 
 namespace penumbra {

@@ -7,7 +7,7 @@
 #include "core/lights/triangle_light.h"
 #include "core/sampling/alias_table.h"
 #include "core/sampling/distribution.h"
-#include "support/chi2.h"
+#include "support/statistics/chi2.h"
 #include "support/scene_builder.h"
 
 namespace penumbra {

@@ -9,8 +9,8 @@
 #include <functional>
 
 #include "core/lights/triangle_light.h"
-#include "support/chi2.h"
-#include "support/estimate.h"
+#include "support/statistics/chi2.h"
+#include "support/statistics/estimate.h"
 #include "support/scene_builder.h"
 
 namespace penumbra {

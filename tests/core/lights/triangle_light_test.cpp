@@ -11,7 +11,7 @@
 #include "core/scene/motion.h"
 #include "core/surface_point.h"
 #include "materials/material.h"
-#include "support/chi2.h"
+#include "support/statistics/chi2.h"
 #include "support/scene_builder.h"
 
 namespace penumbra {

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "core/media/homogeneous_medium.h"
-#include "io/gltf_loader.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/paths.h"
 #include "support/scene_builder.h"
 

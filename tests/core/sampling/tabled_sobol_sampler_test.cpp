@@ -9,8 +9,8 @@
 
 #include "core/sampling/hash.h"
 #include "core/sampling/path_sampler.h"
-#include "tests/support/chi2.h"
-#include "tests/support/sampler_checks.h"
+#include "tests/support/statistics/chi2.h"
+#include "tests/support/statistics/sampler_checks.h"
 
 namespace penumbra {
 namespace {

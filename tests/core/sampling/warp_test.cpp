@@ -7,7 +7,7 @@
 #include <cstring>
 #include <vector>
 
-#include "support/chi2.h"
+#include "support/statistics/chi2.h"
 
 namespace penumbra {
 namespace {

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "core/error.h"
-#include "tests/support/chi2.h"
-#include "tests/support/sampler_checks.h"
+#include "tests/support/statistics/chi2.h"
+#include "tests/support/statistics/sampler_checks.h"
 
 namespace penumbra {
 namespace {

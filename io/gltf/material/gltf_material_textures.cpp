@@ -1,0 +1,230 @@
+#include "io/gltf/material/gltf_material_textures.h"
+
+#include "io/gltf/gltf_accessor.h"
+#include "io/gltf/material/gltf_material_json.h"
+#include "io/image/image_reader.h"
+
+namespace penumbra {
+
+namespace {
+
+// The KHR_texture_transform object of a textureInfo's extensions, or a null Value.
+const tinygltf::Value& texture_transform(const tinygltf::ExtensionMap& extensions) {
+    static const tinygltf::Value none;
+    const auto it = extensions.find("KHR_texture_transform");
+    return it == extensions.end() ? none : it->second;
+}
+
+}  // namespace
+
+TextureTable::TextureTable(const GltfContext& ctx, Scene& scene, ImagePrefetch* prefetch)
+    : m_ctx(ctx), m_scene(scene), m_prefetch(prefetch) {
+    for (const std::string& name : ctx.model.extensionsUsed)
+        if (name == "EXT_texture_webp") m_allow_webp = true;
+    // An image gets a pyramid unless every texture using it samples without mipmaps
+    // (minFilter NEAREST or LINEAR); indices are checked where they are used.
+    for (const tinygltf::Texture& gt : ctx.model.textures) {
+        const bool valid_sampler =
+            gt.sampler >= 0 && size_t(gt.sampler) < ctx.model.samplers.size();
+        const int min_filter =
+            valid_sampler ? ctx.model.samplers[size_t(gt.sampler)].minFilter : -1;
+        if (min_filter == TINYGLTF_TEXTURE_FILTER_NEAREST ||
+            min_filter == TINYGLTF_TEXTURE_FILTER_LINEAR)
+            continue;
+        m_mipmapped.insert(gt.source);
+        const tinygltf::Value& webp = extension_object(gt.extensions, "EXT_texture_webp");
+        if (webp.IsObject() && webp.Has("source") && webp.Get("source").IsInt())
+            m_mipmapped.insert(webp.Get("source").GetNumberAsInt());
+    }
+}
+
+// glTF's minFilter (texture filter and mipmap filter in one enum); absent (-1) or
+// unknown: trilinear, the implementation's choice the spec allows.
+void TextureTable::set_min_filter(int filter, Texture& tex) {
+    switch (filter) {
+        case TINYGLTF_TEXTURE_FILTER_NEAREST:
+            tex.min_nearest = true;
+            tex.mip = MipFilter::None;
+            break;
+        case TINYGLTF_TEXTURE_FILTER_LINEAR:
+            tex.mip = MipFilter::None;
+            break;
+        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+            tex.min_nearest = true;
+            tex.mip = MipFilter::Nearest;
+            break;
+        case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+            tex.mip = MipFilter::Nearest;
+            break;
+        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
+            tex.min_nearest = true;
+            break;
+        default:
+            break;
+    }
+}
+
+TextureRef TextureTable::ref(const std::string& el, int texture, int texcoord,
+                             ImageEncoding encoding, const tinygltf::ExtensionMap& extensions) {
+    TextureRef r;
+    if (texture == -1) return r;  // tinygltf's "absent"
+    m_ctx.check_index(el, "texture", texture, m_ctx.model.textures.size(), "textures");
+    const tinygltf::Value& xf = texture_transform(extensions);
+    if (xf.IsObject()) {
+        const std::string xel = el + ".extensions.KHR_texture_transform";
+        r.offset = json_vec2(m_ctx, xel, xf, "offset", r.offset);
+        r.rotation = json_number(m_ctx, xel, xf, "rotation", r.rotation);
+        r.scale = json_vec2(m_ctx, xel, xf, "scale", r.scale);
+        if (xf.Has("texCoord")) {
+            if (!xf.Get("texCoord").IsInt()) m_ctx.fail(xel, "texCoord is not an integer");
+            texcoord = xf.Get("texCoord").GetNumberAsInt();
+        }
+    }
+    if (texcoord < 0) m_ctx.fail(el, "texCoord " + std::to_string(texcoord) + " is negative");
+    // TriangleMesh keeps TEXCOORD_0 and _1 only.
+    if (texcoord > 1) {
+        m_ctx.warn(el,
+                   "TEXCOORD_" + std::to_string(texcoord) + " is not supported; using TEXCOORD_0");
+        texcoord = 0;
+    }
+    r.texture = texture_index(texture, encoding);
+    r.texcoord = texcoord;
+    return r;
+}
+
+TextureRef TextureTable::json_ref(const std::string& el, const tinygltf::Value& obj,
+                                  const char* key, ImageEncoding encoding, float* scale) {
+    if (!obj.Has(key)) return {};
+    const std::string tel = el + "." + key;
+    const tinygltf::Value& info = obj.Get(key);
+    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt())
+        m_ctx.fail(tel, "must be a textureInfo with an integer index");
+    int texcoord = 0;
+    if (info.Has("texCoord")) {
+        if (!info.Get("texCoord").IsInt()) m_ctx.fail(tel, "texCoord is not an integer");
+        texcoord = info.Get("texCoord").GetNumberAsInt();
+    }
+    if (scale) *scale = json_number(m_ctx, tel, info, "scale", 1.0f);
+    tinygltf::ExtensionMap extensions;
+    if (info.Has("extensions") && info.Get("extensions").Has("KHR_texture_transform"))
+        extensions["KHR_texture_transform"] = info.Get("extensions").Get("KHR_texture_transform");
+    const int index = info.Get("index").GetNumberAsInt();
+    // ref() takes -1 as tinygltf's "absent"; written in the file, it is a bad index.
+    if (index < 0)
+        m_ctx.check_index(tel, "texture", index, m_ctx.model.textures.size(), "textures");
+    return ref(tel, index, texcoord, encoding, extensions);
+}
+
+int TextureTable::texture_index(int index, ImageEncoding encoding) {
+    const auto key = std::make_pair(index, int(encoding));
+    if (auto it = m_textures.find(key); it != m_textures.end()) return it->second;
+    const tinygltf::Texture& gt = m_ctx.model.textures[size_t(index)];
+    const std::string el = element("textures", size_t(index));
+    Texture tex;
+    if (gt.sampler != -1) {
+        m_ctx.check_index(el, "sampler", gt.sampler, m_ctx.model.samplers.size(), "samplers");
+        const tinygltf::Sampler& s = m_ctx.model.samplers[size_t(gt.sampler)];
+        const std::string sel = element("samplers", size_t(gt.sampler));
+        tex.wrap_s = wrap_mode(sel, "wrapS", s.wrapS);
+        tex.wrap_t = wrap_mode(sel, "wrapT", s.wrapT);
+        tex.nearest = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+        set_min_filter(s.minFilter, tex);
+    }
+    const int image = image_index(image_source(gt, el), encoding);
+    if (image < 0) {  // undecodable: the texture is absent
+        m_textures.emplace(key, -1);
+        return -1;
+    }
+    tex.image = uint32_t(image);
+    const int result = int(m_scene.textures.size());
+    m_scene.textures.push_back(tex);
+    m_textures.emplace(key, result);
+    return result;
+}
+
+// EXT_texture_webp: the WebP image when the texture names one (OIIO decodes WebP); the
+// core `source` is then only the fallback for viewers without WebP. KHR_texture_basisu
+// (KTX2) is not read (Debian 12 packages no Basis Universal transcoder), so its texture
+// uses the core `source`, the fallback the extension allows, and is an error without one.
+int TextureTable::image_source(const tinygltf::Texture& gt, const std::string& el) const {
+    const tinygltf::Value& webp = extension_object(gt.extensions, "EXT_texture_webp");
+    if (webp.IsObject()) {
+        const std::string wel = el + ".extensions.EXT_texture_webp";
+        if (!webp.Has("source") || !webp.Get("source").IsInt())
+            m_ctx.fail(wel, "source must be an integer image index");
+        const int source = webp.Get("source").GetNumberAsInt();
+        m_ctx.check_index(wel, "source", source, m_ctx.model.images.size(), "images");
+        return source;
+    }
+    if (gt.source == -1) {
+        if (gt.extensions.count("KHR_texture_basisu"))
+            m_ctx.fail(el,
+                       "has only a KHR_texture_basisu (KTX2) source and no fallback source "
+                       "image; KTX2 cannot be decoded (no Basis Universal decoder)");
+        m_ctx.fail(el, "has no source image");
+    }
+    m_ctx.check_index(el, "source", gt.source, m_ctx.model.images.size(), "images");
+    return gt.source;
+}
+
+int TextureTable::image_index(int index, ImageEncoding encoding) {
+    const auto key = std::make_pair(index, int(encoding));
+    if (auto it = m_images.find(key); it != m_images.end()) return it->second;
+    if (m_undecodable.count(index)) return -1;
+    const tinygltf::Image& gi = m_ctx.model.images[size_t(index)];
+    const std::string el = element("images", size_t(index));
+    const bool external = !gi.uri.empty() && gi.uri.compare(0, 5, "data:") != 0;
+    std::vector<uint8_t> view;
+    const std::vector<uint8_t>* bytes = &gi.image;  // captured undecoded by the image callback
+    if (gi.bufferView >= 0)
+        bytes = &(view = buffer_view_bytes(m_ctx, el, gi.bufferView));
+    else if (gi.image.empty() && external)
+        m_ctx.fail(el, "cannot read image file '" + gi.uri + "'");
+    else if (gi.image.empty())
+        m_ctx.fail(el, "has no image data");
+    const std::string label = external ? gi.uri : gi.name;
+    const std::string named = label.empty() ? el : el + " ('" + label + "')";
+    TextureDecodeLimits limits;
+    limits.allow_webp = m_allow_webp;
+    limits.max_pixels = m_ctx.max_texture_pixels;
+    TextureImage img;
+    try {
+        const bool mipmapped = m_mipmapped.count(index) > 0;
+        if (m_prefetch && m_prefetch->collecting()) {
+            m_prefetch->record(key, *bytes, m_ctx.file + ": " + named, encoding, limits,
+                               mipmapped);
+            return 0;  // a dry run's placeholder
+        }
+        if (!m_prefetch || !m_prefetch->take(key, &img))
+            img = decode_texture_image(*bytes, m_ctx.file + ": " + named, encoding, limits,
+                                       mipmapped);
+    } catch (const ImageDecodeError& e) {
+        // Renderable without it: the textures using it are left out, so their materials
+        // use their factors alone; one warning per image, whichever encodings use it.
+        m_undecodable.insert(index);
+        m_ctx.warn(named,
+                   "cannot decode image: " + e.why() + "; the textures using it are ignored");
+        return -1;
+    }
+    img.name = external ? gi.uri : (gi.name.empty() ? el : gi.name);
+    const int result = int(m_scene.images.size());
+    m_scene.images.push_back(std::move(img));
+    m_images.emplace(key, result);
+    return result;
+}
+
+WrapMode TextureTable::wrap_mode(const std::string& el, const char* what, int mode) const {
+    switch (mode) {
+        case TINYGLTF_TEXTURE_WRAP_REPEAT:
+            return WrapMode::Repeat;
+        case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
+            return WrapMode::ClampToEdge;
+        case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
+            return WrapMode::MirroredRepeat;
+        default:
+            m_ctx.fail(el,
+                       std::string(what) + " " + std::to_string(mode) + " is not a glTF wrap mode");
+    }
+}
+
+}  // namespace penumbra
