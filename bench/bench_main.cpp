@@ -45,7 +45,7 @@ BENCHMARK(BM_EmbreeIntersectIncoherent);
 
 // Renders 128x128 at 4 spp and reports samples/s (items) and rays/s (a counter).
 void render_benchmark(benchmark::State& state, const Scene& scene, const Accel& accel,
-                      const LightSet& lights, const Camera& camera, const std::string& integrator_name,
+                      const LightSet& lights, const Camera& camera, IntegratorType integrator_name,
                       int threads) {
     const RenderContext ctx{scene, accel, lights};
     const auto integrator = make_integrator(integrator_name, {});
@@ -69,7 +69,7 @@ void BM_RenderCornell(benchmark::State& state) {
     static const EmbreeAccel accel(scene);
     static const LightSet lights(scene, nullptr);
     const auto camera = make_camera(scene.cameras[0], 128, 128);
-    render_benchmark(state, scene, accel, lights, *camera, state.range(1) ? "path" : "basic",
+    render_benchmark(state, scene, accel, lights, *camera, state.range(1) ? IntegratorType::Path : IntegratorType::Basic,
                      static_cast<int>(state.range(0)));
 }
 BENCHMARK(BM_RenderCornell)->Args({1, 0})->Args({2, 0})->Args({1, 1})->Args({2, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
@@ -82,7 +82,7 @@ void BM_RenderBoxTextured(benchmark::State& state) {
     static const LightSet lights(
         scene, std::make_unique<EnvironmentLight>(Spectrum(1), length(scene.bounds().diagonal())));
     const auto camera = make_camera(default_camera(scene.bounds(), 1), 128, 128);
-    render_benchmark(state, scene, accel, lights, *camera, "path", static_cast<int>(state.range(0)));
+    render_benchmark(state, scene, accel, lights, *camera, IntegratorType::Path, static_cast<int>(state.range(0)));
 }
 BENCHMARK(BM_RenderBoxTextured)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 

@@ -62,8 +62,8 @@ void BM_SpecularAlbedoAt(benchmark::State& state) {
 }
 BENCHMARK(BM_SpecularAlbedoAt);
 
-void BM_FilterSample(benchmark::State& state, const char* name) {
-    const std::unique_ptr<Filter> f = make_filter(name);
+void BM_FilterSample(benchmark::State& state, FilterType type) {
+    const std::unique_ptr<Filter> f = make_filter(type);
     Rng rng(3);
     Vec2 u[256];
     for (Vec2& v : u) v = {rng.next_float(), rng.next_float()};
@@ -76,8 +76,8 @@ void BM_FilterSample(benchmark::State& state, const char* name) {
     benchmark::DoNotOptimize(sum);
     state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK_CAPTURE(BM_FilterSample, box, "box");
-BENCHMARK_CAPTURE(BM_FilterSample, gaussian, "gaussian");
+BENCHMARK_CAPTURE(BM_FilterSample, box, FilterType::Box);
+BENCHMARK_CAPTURE(BM_FilterSample, gaussian, FilterType::Gaussian);
 
 }  // namespace
 }  // namespace penumbra

@@ -107,11 +107,19 @@ public:
     virtual bool pairs_light_and_bsdf_samples() const { return false; }
 };
 
-// Names accepted by make_integrator, with one-line descriptions (for --help).
-const std::vector<std::pair<std::string, std::string>>& integrator_names();
-// Throws std::invalid_argument for an unknown name.
-LightStrategy parse_light_strategy(const std::string& name);  // mis | bsdf | light
-std::unique_ptr<Integrator> make_integrator(const std::string& name,
-                                            const IntegratorOptions& options);
+// Path, direct and basic estimate radiance; the others are debug views of the first hit.
+enum class IntegratorType {
+    Path,
+    Direct,
+    Basic,
+    ShadingNormal,
+    GeometricNormal,
+    Albedo,
+    Depth,
+    Uv,
+    Instance
+};
+
+std::unique_ptr<Integrator> make_integrator(IntegratorType type, const IntegratorOptions& options);
 
 }  // namespace penumbra

@@ -26,7 +26,7 @@ struct RenderOptions {
     int threads = 0;  // 0: all hardware threads
     int tile_size = 16;
     SamplerType sampler = SamplerType::TabledSobol;
-    std::string filter = "gaussian";
+    FilterType filter = FilterType::Gaussian;
     bool progress = true;
     std::string label = "render";
     // Scene time in seconds of the shutter's opening, for the record: the loader has

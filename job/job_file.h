@@ -3,51 +3,22 @@
 // frame-list syntax shared by --frames and the job file's "frames".
 #pragma once
 
-#include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
 namespace penumbra {
 
-// Settings a job file may give, globally ("defaults") or per entry. Unset: inherit.
-// Relative paths (scene, output, out_dir) are resolved against the job file's folder.
-struct JobSettings {
-    std::optional<std::string> camera, variant, integrator, strategy, sampler, filter, accel;
-    // as --light-sampler, --triangle-sampling, --env-sampling
-    std::optional<std::string> light_sampler, triangle_sampling, env_sampling;
-    std::optional<std::string> output, out_dir, name, frames;
-    std::optional<int> width, height, max_depth, frame;
-    // `penumbra farm`: split each image into this many row bands, one farm task each
-    // (`render --job` ignores it: one machine renders whole images).
-    std::optional<int> bands;
-    // `penumbra farm`: consecutive frames of an entry rendered by one task (fewer, longer
-    // tasks for a scheduler that starts only so many per second; docs/farm.md).
-    std::optional<int> frames_per_task;
-    std::optional<uint32_t> spp;
-    std::optional<uint64_t> seed;
-    // Timeline: time (an instant), shutter_open + shutter_close (seconds), or frame /
-    // frames with fps and shutter (a fraction of a frame); see job/timeline.h.
-    std::optional<double> time, time_limit, fps, shutter, shutter_open, shutter_close;
-    // Colour and EXR output, as the command line's --ocio-config, --working-space,
-    // --output-colorspace, --display, --view, --look, --aov, --half, --compression.
-    std::optional<std::string> ocio_config, working_space, output_colorspace, display, view,
-        look, aov, compression;
-    std::optional<bool> half;
-    // Light: as --light-units, --default-light and --exposure (stops).
-    std::optional<std::string> light_units, default_light;
-    std::optional<double> exposure;
-    std::optional<bool> no_file_lights;  // as --no-file-lights
-    // As --strict and --max-texture-pixels.
-    std::optional<bool> strict;
-    std::optional<uint64_t> max_texture_pixels;
-    // Adaptive sampling and firefly control, as --target-error, --adaptive-min-spp,
-    // --clamp-direct, --clamp-indirect and --regularize.
-    std::optional<double> target_error, clamp_direct, clamp_indirect, regularize;
-    std::optional<int> adaptive_min_spp;
-    // As --denoise.
-    std::optional<bool> denoise;
+struct OptionDecl;
+
+// One key of a defaults or jobs[] entry: a declared render option (job/option_table.h)
+// and its value as the option's text. Relative paths are already resolved against the
+// job file's folder.
+struct JobSetting {
+    const OptionDecl* option;
+    std::string text;
 };
+// Unset keys inherit (command line < defaults < entry).
+using JobSettings = std::vector<JobSetting>;
 
 struct JobEntry {
     std::string scene;

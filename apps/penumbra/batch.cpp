@@ -16,6 +16,7 @@
 #include "integrators/integrator.h"
 #include "io/image/image_writer.h"
 #include "job/job_file.h"
+#include "job/option_table.h"
 #include "job/render_output.h"
 
 namespace penumbra {
@@ -24,76 +25,26 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void apply(const JobSettings& s, RenderCommandOptions& o) {
-    if (s.camera) o.camera = *s.camera;
-    if (s.variant) o.variant = *s.variant;
-    if (s.integrator) o.integrator = *s.integrator;
-    if (s.strategy) o.strategy = *s.strategy;
-    if (s.light_sampler) o.light_sampler = *s.light_sampler;
-    if (s.triangle_sampling) o.triangle_sampling = *s.triangle_sampling;
-    if (s.env_sampling) o.env_sampling = *s.env_sampling;
-    if (s.sampler) o.sampler = *s.sampler;
-    if (s.filter) o.filter = *s.filter;
-    if (s.accel) o.accel = *s.accel;
-    if (s.output) o.output = *s.output;
-    if (s.out_dir) o.out_dir = *s.out_dir;
-    if (s.name) o.name = *s.name;
-    if (s.width) o.width = *s.width;
-    if (s.height) o.height = *s.height;
-    if (s.max_depth) o.max_depth = *s.max_depth;
-    if (s.bands) o.bands = *s.bands;
-    if (s.frames_per_task) o.frames_per_task = *s.frames_per_task;
-    if (s.spp) o.spp = *s.spp;
-    if (s.seed) o.seed = *s.seed;
-    if (s.time_limit) o.time_limit = *s.time_limit;
-    if (s.fps) o.timeline.fps = *s.fps;
-    if (s.shutter) o.timeline.shutter = *s.shutter;
+void apply(const JobSettings& settings, RenderCommandOptions& o) {
     // A frame, frame range, time or shutter interval replaces the timing it inherits.
-    if (s.frames || s.frame || s.time || s.shutter_open || s.shutter_close) {
+    const bool timing = std::any_of(settings.begin(), settings.end(),
+                                    [](const JobSetting& s) { return s.option->timing; });
+    if (timing) {
         o.frames.clear();
         o.timeline.frame.reset();
         o.timeline.time.reset();
         o.timeline.shutter_open.reset();
         o.timeline.shutter_close.reset();
     }
-    if (s.frames) o.frames = *s.frames;
-    if (s.frame) o.frames = std::to_string(*s.frame);
-    if (s.time) o.timeline.time = *s.time;
-    if (s.shutter_open) o.timeline.shutter_open = *s.shutter_open;
-    if (s.shutter_close) o.timeline.shutter_close = *s.shutter_close;
-    if (s.ocio_config) o.color.config = *s.ocio_config;
-    if (s.working_space) o.color.working_space = *s.working_space;
-    if (s.output_colorspace) o.color.output_space = *s.output_colorspace;
-    if (s.display) o.color.display = *s.display;
-    if (s.view) o.color.view = *s.view;
-    if (s.look) o.color.look = *s.look;
-    if (s.aov) o.aovs = *s.aov;
-    if (s.half) o.half = *s.half;
-    if (s.compression) o.compression = *s.compression;
-    if (s.light_units) o.light_units = *s.light_units;
-    if (s.default_light) o.default_light = *s.default_light;
-    if (s.no_file_lights) o.no_file_lights = *s.no_file_lights;
-    if (s.exposure) o.exposure = float(*s.exposure);
-    if (s.strict) o.strict = *s.strict;
-    if (s.max_texture_pixels) o.max_texture_pixels = *s.max_texture_pixels;
-    if (s.target_error) o.target_error = *s.target_error;
-    if (s.adaptive_min_spp) o.adaptive_min_spp = unsigned(*s.adaptive_min_spp);
-    if (s.clamp_direct) o.clamp_direct = float(*s.clamp_direct);
-    if (s.clamp_indirect) o.clamp_indirect = float(*s.clamp_indirect);
-    if (s.regularize) o.regularize = float(*s.regularize);
-    if (s.denoise) o.denoise = *s.denoise;
+    for (const JobSetting& s : settings) {
+        if (s.option->job_set) s.option->job_set(o, s.text);
+        else s.option->set(o, s.text);
+    }
 }
 
 // Option values the command line checks with CLI11 but a job file can spell freely.
 void validate(const RenderCommandOptions& o, const std::string& where) {
     try {
-        parse_sampler_type(o.sampler);
-        parse_light_strategy(o.strategy);
-        parse_accel_type(o.accel);
-        make_filter(o.filter);
-        bool known = false;
-        for (const auto& [name, desc] : integrator_names()) known = known || name == o.integrator;
-        if (!known) throw std::invalid_argument("unknown integrator '" + o.integrator + "'");
         expand_output_name(o.output.empty() ? o.name : o.output, {});
         TimelineSettings timeline = o.timeline;
         if (!o.frames.empty()) {
@@ -101,10 +52,6 @@ void validate(const RenderCommandOptions& o, const std::string& where) {
             timeline.frame = 0;  // each frame of the list is checked the same way
         }
         resolve_shutter(timeline);
-        parse_aovs(o.aovs);
-        const auto& kinds = exr_compressions();
-        if (std::find(kinds.begin(), kinds.end(), o.compression) == kinds.end())
-            throw std::invalid_argument("unknown EXR compression '" + o.compression + "'");
         // Adaptive sampling gives every pixel at least two samples (its first pass is
         // even), so only the budget can leave a half empty.
         if (o.denoise && o.spp < kDenoiseMinSpp)
@@ -112,6 +59,8 @@ void validate(const RenderCommandOptions& o, const std::string& where) {
                 "denoise needs at least " + std::to_string(kDenoiseMinSpp) +
                 " samples per pixel, spp is " + std::to_string(o.spp) +
                 " (the denoiser compares two halves of each pixel's samples)");
+        if (o.lens.fstop > 0 && o.lens.aperture_radius >= 0)
+            throw std::invalid_argument("--fstop excludes --aperture-radius: give one");
         // Adaptive sampling stops a pixel by the error of its 3x3 neighbourhood, so a
         // band's edge rows would depend on rows another task renders.
         if (o.bands > 1 && o.target_error > 0)

@@ -37,12 +37,13 @@ std::string join(const std::vector<std::string>& parts) {
 
 // Debug views (normals, albedo, depth, ...) show no light: their brightness says
 // nothing about the lighting.
-bool shows_light(const std::string& integrator) {
-    return integrator == "path" || integrator == "direct" || integrator == "basic";
+bool shows_light(IntegratorType integrator) {
+    return integrator == IntegratorType::Path || integrator == IntegratorType::Direct ||
+           integrator == IntegratorType::Basic;
 }
 
 bool user_environment(const RenderCommandOptions& o) {
-    return !o.env.empty() || o.env_color.size() == 3;
+    return !o.env.image.empty() || o.env.color.size() == 3;
 }
 
 }  // namespace
@@ -79,7 +80,7 @@ bool add_default_lights_if_view_dark(SceneSetup& setup, const RenderCommandOptio
         return false;
     }
     const std::string hint =
-        light_units_hint(setup.scene.generator, setup.file_lights, o.light_units);
+        light_units_hint(setup.scene.generator, setup.file_lights, o.gltf.light_units);
     LOG_WARNING(setup.path << ": the file's lights leave the view dark (" << percent(e.lit_fraction)
                            << " of a preview's pixels reach " << percent(kLitLuminance)
                            << " of display white, under " << percent(kMinLitFraction) << ")"
@@ -93,8 +94,8 @@ bool add_default_lights_if_view_dark(SceneSetup& setup, const RenderCommandOptio
 }
 
 std::string light_units_hint(const std::string& generator, size_t file_lights,
-                             const std::string& light_units) {
-    if (file_lights == 0 || light_units != "photometric") return "";
+                             LightUnits light_units) {
+    if (file_lights == 0 || light_units != LightUnits::Photometric) return "";
     const std::string tag = "Blender I/O v";
     const size_t at = generator.find(tag);
     if (at == std::string::npos) return "";
@@ -121,15 +122,15 @@ std::optional<ImageWarning> image_warning(const ImageExposure& e, const RenderCo
                     percent(kLitLuminance) + " of display white (under " +
                     percent(kMinLitFraction) + ")";
         if (!facts.default_lights && !user_environment(o))
-            causes.push_back(o.default_light == "off"
+            causes.push_back(o.default_light == DefaultLightMode::Off
                                  ? "the default lighting is off (--default-light auto or on "
                                    "adds a key and a fill light)"
                                  : "no default lighting (--default-light on adds a key and a "
                                    "fill light)");
-        const std::string hint = light_units_hint(facts.generator, facts.file_lights, o.light_units);
+        const std::string hint = light_units_hint(facts.generator, facts.file_lights, o.gltf.light_units);
         if (!hint.empty())
             causes.push_back(hint);
-        else if (facts.file_lights > 0 && o.light_units == "photometric")
+        else if (facts.file_lights > 0 && o.gltf.light_units == LightUnits::Photometric)
             causes.push_back(
                 "light intensities in W/sr and W/m^2 rather than candela and lux "
                 "(--light-units radiometric reads them 683 times brighter)");
@@ -146,12 +147,12 @@ std::optional<ImageWarning> image_warning(const ImageExposure& e, const RenderCo
         w.message = "image mostly clipped: " + percent(e.clipped_fraction) +
                     " of its pixels exceed display white (over " + percent(kMaxClippedFraction) +
                     ")";
-        if (facts.file_lights > 0 && o.light_units == "radiometric")
+        if (facts.file_lights > 0 && o.gltf.light_units == LightUnits::Radiometric)
             causes.push_back(
                 "the file's intensities read as W/sr and W/m^2 (--light-units "
                 "photometric, the spec's candela and lux, reads them 683 times "
                 "dimmer)");
-        if (facts.default_lights && o.default_light == "on")
+        if (facts.default_lights && o.default_light == DefaultLightMode::On)
             causes.push_back(
                 "the default lights added to the scene's own (--default-light "
                 "off leaves the scene to its own lights)");

@@ -35,7 +35,7 @@ bool add_default_lights_if_view_dark(SceneSetup& setup, const RenderCommandOptio
 // Khronos glTF Blender I/O 1.x (Blender 2.80 to 3.0) wrote a lamp's power in W as its
 // intensity, whatever the light's type. Empty otherwise.
 std::string light_units_hint(const std::string& generator, size_t file_lights,
-                             const std::string& light_units);
+                             LightUnits light_units);
 
 struct ImageWarning {
     std::string kind;     // "nearly black" or "mostly clipped"

@@ -12,11 +12,11 @@
 #include "apps/penumbra/denoise_step.h"
 #include "apps/penumbra/interrupt.h"
 #include "apps/penumbra/light_check.h"
-#include "apps/penumbra/output_options.h"
+#include "apps/penumbra/option_cli.h"
+#include "job/option_table.h"
 #include "apps/penumbra/render_checkpoint.h"
 #include "apps/penumbra/render_metadata.h"
 #include "apps/penumbra/scene_setup.h"
-#include "apps/penumbra/timeline_options.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/progress.h"
@@ -36,40 +36,11 @@ void add_render_command(CLI::App& app, RenderCommandOptions& o) {
     cmd->add_option("scenes", o.scenes,
                     "Scene files (.gltf or .glb); a missing or broken one is reported and the "
                     "others still render");
-    cmd->add_option("-o,--output", o.output,
-                    "Output EXR; with several images, a name template as for --name; "
-                    "default: OUT_DIR/NAME");
-    cmd->add_option("--out-dir", o.out_dir, "Folder for outputs when -o is not given")
-        ->capture_default_str();
-    cmd->add_option("--name", o.name,
-                    "Output name template: {scene} (file stem), {camera} (name), {frame} (4 "
-                    "digits), {index} (position in the batch); default {scene}.exr, or "
-                    "{scene}_{frame}.exr with --frames");
     cmd->add_option("--job", o.job_file,
                     "JSON job file: {\"defaults\": {...}, \"jobs\": [{\"scene\": ..., ...}]}; "
                     "see README")
         ->check(CLI::ExistingFile);
-    cmd->add_option("--frames", o.frames,
-                    "Render these frames (e.g. 1-48, 1-48:2, 1,5,10-12), one image each, the "
-                    "shutter opening at frame/fps (for --shutter of a frame)");
-    add_timeline_options(cmd, o.timeline, true);
-    cmd->add_option("--time-limit", o.time_limit,
-                    "Seconds per image: render passes until the time is up or --spp is "
-                    "reached; the EXR records the samples done")
-        ->check(CLI::PositiveNumber);
-    cmd->add_flag("--overwrite", o.overwrite,
-                  "Render images whose output exists (by default a finished output is "
-                  "skipped, so an interrupted batch resumes)");
-    cmd->add_option("--checkpoint-interval", o.checkpoint_interval,
-                    "Seconds between checkpoints (OUTPUT.ckpt: the raw film, so the same "
-                    "command continues a stopped render exactly); 0: only on Ctrl-C or "
-                    "SIGTERM")
-        ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
-    cmd->add_flag("--no-preview", o.no_preview, "Do not write the sRGB PNG preview");
-    add_image_options(cmd, o);
-    add_output_options(cmd, o);
-    cmd->add_flag("-q,--quiet", o.quiet, "Only print errors");
+    add_declared_options(cmd, o, is_render_option);
 }
 
 namespace {
@@ -154,7 +125,7 @@ void print_image_report(const ImageReport& r) {
                  "  %.2f M rays/s (%llu rays), %.2f M samples/s, peak memory %s%s\n",
                  r.scene.c_str(), r.output.c_str(), r.preview.empty() ? "" : " + ",
                  r.preview.c_str(), stats.interrupted ? " (partial)" : "", setup.width,
-                 setup.height, stats.spp, spp_note.c_str(), r.o.integrator.c_str(),
+                 setup.height, stats.spp, spp_note.c_str(), render_option("integrator").get(r.o).c_str(),
                  setup.camera_desc.name.c_str(), format_duration(setup.load_seconds).c_str(),
                  format_duration(setup.build_seconds).c_str(), setup.scene.objects.size(),
                  setup.scene.instances.size(), format_duration(stats.seconds).c_str(),

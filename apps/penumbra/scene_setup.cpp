@@ -48,27 +48,26 @@ float scene_radius(const Scene& scene) {
 }
 
 // Environment images and colours are taken as linear Rec.709, like glTF's colours.
-std::unique_ptr<EnvironmentLight> make_environment(const RenderCommandOptions& o,
+std::unique_ptr<EnvironmentLight> make_environment(const EnvironmentOptions& e,
                                                    const Scene& scene,
                                                    const Mat3& rec709_to_working,
                                                    EnvironmentSampling sampling) {
-    if (!o.env.empty()) {
-        Image img = read_image(o.env, ImageEncoding::Linear);
+    if (!e.image.empty()) {
+        Image img = read_image(e.image, ImageEncoding::Linear);
         convert_image_colors(img, rec709_to_working);
-        return std::make_unique<EnvironmentLight>(std::move(img), o.env_intensity, o.env_rotation,
+        return std::make_unique<EnvironmentLight>(std::move(img), e.intensity, e.rotation,
                                                   scene_radius(scene), sampling);
     }
-    if (o.env_color.size() == 3)
+    if (e.color.size() == 3)
         return std::make_unique<EnvironmentLight>(
-            rec709_to_working * Spectrum(o.env_color[0], o.env_color[1], o.env_color[2]) *
-                o.env_intensity,
+            rec709_to_working * Spectrum(e.color[0], e.color[1], e.color[2]) * e.intensity,
             scene_radius(scene));
     return nullptr;
 }
 
 // Command-line depth of field settings override the file's; focusing on a pixel needs
 // the accelerator, so this runs after it is built.
-void apply_lens_options(const RenderCommandOptions& o, const std::string& path, int width,
+void apply_lens_options(const LensOverrides& o, const std::string& path, int width,
                         int height, const Scene& scene, const Accel& accel, CameraDesc& cam) {
     if (o.aperture_blades >= 0) cam.aperture_blades = o.aperture_blades;
     if (o.aperture_radius >= 0) cam.aperture_radius = o.aperture_radius;
@@ -101,16 +100,8 @@ double since(Clock::time_point t) {
 GltfLoadStats load_scene(const RenderCommandOptions& o, SceneSetup& s) {
     const std::string& path = s.path;
     const auto t0 = Clock::now();
-    GltfLoadOptions load;
+    GltfLoadOptions load = o.gltf;
     load.rec709_to_working = s.color->rec709_to_working();
-    load.variant = o.variant;
-    load.strict = o.strict;
-    load.max_texture_pixels = o.max_texture_pixels;
-    try {
-        load.light_units = parse_light_units(o.light_units);
-    } catch (const std::invalid_argument& e) {
-        throw SceneError(path + ": " + e.what());
-    }
     try {
         const ShutterInterval shutter = resolve_shutter(o.timeline);
         load.shutter_open = shutter.open;
@@ -163,18 +154,6 @@ void choose_camera_and_size(const RenderCommandOptions& o, SceneSetup& s) {
         LOG_INFO(s.path << ": no camera in the file; using one that frames the scene");
 }
 
-void make_integrator_for(const RenderCommandOptions& o, SceneSetup& s) {
-    IntegratorOptions iopt;
-    iopt.max_depth = o.max_depth;
-    iopt.strategy = parse_light_strategy(o.strategy);
-    iopt.light_samples = o.light_samples;
-    iopt.bsdf_samples = o.bsdf_samples;
-    iopt.clamp_direct = o.clamp_direct;
-    iopt.clamp_indirect = o.clamp_indirect;
-    iopt.regularize_roughness = o.regularize;
-    s.integrator = make_integrator(o.integrator, iopt);
-}
-
 // What setup_lights decided that the view check after the accelerator needs again.
 struct LightingSetup {
     DefaultLightMode mode = DefaultLightMode::Auto;
@@ -187,22 +166,20 @@ LightingSetup setup_lights(const RenderCommandOptions& o, SceneSetup& s) {
     const std::string& path = s.path;
     Scene& scene = s.scene;
     const bool paired = s.integrator->pairs_light_and_bsdf_samples();
-    if (o.env_sampling == "compensated" && !paired)
+    const EnvSamplingChoice sampling = o.env.sampling;
+    if (sampling == EnvSamplingChoice::Compensated && !paired)
         throw SceneError(path +
                          ": --env-sampling compensated needs every light sample paired "
                          "with a BSDF sample by MIS (--integrator path with "
                          "--strategy mis, or direct with light and BSDF samples); "
                          "the image would be too dark otherwise");
-    const bool compensate = o.env_sampling == "compensated" || (o.env_sampling == "auto" && paired);
+    const bool compensate = sampling == EnvSamplingChoice::Compensated ||
+                            (sampling == EnvSamplingChoice::Auto && paired);
     std::unique_ptr<EnvironmentLight> env = make_environment(
-        o, scene, s.color->rec709_to_working(),
+        o.env, scene, s.color->rec709_to_working(),
         compensate ? EnvironmentSampling::MisCompensated : EnvironmentSampling::Full);
     LightingSetup result;
-    try {
-        result.mode = parse_default_light_mode(o.default_light);
-    } catch (const std::invalid_argument& e) {
-        throw SceneError(path + ": " + e.what());
-    }
+    result.mode = o.default_light;
     const LightingChoice lighting = choose_lighting(result.mode, scene, env != nullptr);
     s.default_lights = lighting.add_defaults;
     LOG_INFO(path << ": lighting: " << lighting.reason);
@@ -210,12 +187,7 @@ LightingSetup setup_lights(const RenderCommandOptions& o, SceneSetup& s) {
         std::unique_ptr<EnvironmentLight> dim = add_default_lights(scene, s.camera_desc);
         if (!env) env = std::move(dim);
     }
-    try {
-        result.options.sampler = parse_light_sampler(o.light_sampler);
-        result.options.triangles = parse_triangle_sampling(o.triangle_sampling);
-    } catch (const std::invalid_argument& e) {
-        throw SceneError(path + ": " + e.what());
-    }
+    result.options = o.lights;
     s.lights = std::make_unique<LightSet>(scene, std::move(env), result.options);
     return result;
 }
@@ -226,7 +198,7 @@ void build_accel(const RenderCommandOptions& o, const GltfLoadStats& ls, SceneSe
     const Scene& scene = s.scene;
     const auto t0 = Clock::now();
     const std::clock_t build_cpu = std::clock();
-    s.accel = make_accel(parse_accel_type(o.accel), scene);
+    s.accel = make_accel(o.accel, scene);
     s.build_seconds = since(t0);
     const AccelStats as = s.accel->stats();
     char line[400];
@@ -256,17 +228,14 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     s->color = std::make_unique<ColorPipeline>(o.color);
     const GltfLoadStats load_stats = load_scene(o, *s);
     choose_camera_and_size(o, *s);
-    make_integrator_for(o, *s);
+    s->integrator = make_integrator(o.integrator, o.path);
     const LightingSetup lighting = setup_lights(o, *s);
     build_accel(o, load_stats, *s);
 
-    apply_lens_options(o, path, s->width, s->height, s->scene, *s->accel, s->camera_desc);
+    apply_lens_options(o.lens, path, s->width, s->height, s->scene, *s->accel, s->camera_desc);
 
     s->camera = make_camera(s->camera_desc, s->width, s->height);
-    s->materials.gltf_distribution =
-        o.microfacet == "beckmann" ? MicrofacetType::Beckmann : MicrofacetType::Ggx;
-    s->materials.gltf_layering =
-        o.gltf_layering == "spec" ? GltfLayering::Spec : GltfLayering::AlbedoScaled;
+    s->materials = o.materials;
     // What the camera sees decides too: the file's lights can pass the rule in
     // setup_lights and still leave the view dark (a filament inside its lamp, watts
     // written as candela).
@@ -281,7 +250,7 @@ RenderOptions render_options_for(const RenderCommandOptions& o, const std::strin
     r.spp = o.spp;
     r.seed = o.seed;
     r.threads = o.threads;
-    r.sampler = parse_sampler_type(o.sampler);
+    r.sampler = o.sampler;
     r.filter = o.filter;
     r.progress = !o.quiet;
     r.label = label;

@@ -8,7 +8,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include "apps/penumbra/image_options.h"
 #include "apps/penumbra/render_command.h"
 #include "core/accel/accel.h"
 #include "core/camera/camera.h"

@@ -20,21 +20,11 @@ uint64_t Accel::rays_traced() const {
     return n;
 }
 
-const std::vector<std::string>& accel_type_names() {
-    static const std::vector<std::string> names = {"embree", "bvh-sah", "bvh-median",
-                                                   "bvh-center", "grid"};
-    return names;
-}
-
-AccelType parse_accel_type(const std::string& name) {
-    if (name == "embree") return AccelType::Embree;
-    if (name == "bvh" || name == "bvh-sah") return AccelType::BvhSah;
-    if (name == "bvh-median") return AccelType::BvhMedian;
-    if (name == "bvh-center") return AccelType::BvhCenter;
-    if (name == "grid") return AccelType::Grid;
-    throw std::invalid_argument("unknown accelerator '" + name +
-                                "' (expected embree, bvh, bvh-sah, bvh-median, bvh-center "
-                                "or grid)");
+const std::vector<AccelType>& all_accel_types() {
+    static const std::vector<AccelType> types = {AccelType::Embree, AccelType::BvhSah,
+                                                 AccelType::BvhMedian, AccelType::BvhCenter,
+                                                 AccelType::Grid};
+    return types;
 }
 
 std::string accel_type_name(AccelType type) {

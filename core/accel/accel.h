@@ -108,11 +108,10 @@ private:
 
 // Embree, our BVH with each of its split strategies (bvh_build.h), and the uniform grid.
 enum class AccelType { Embree, BvhSah, BvhMedian, BvhCenter, Grid };
-// Accepts the names of accel_type_names(), plus "bvh" for the SAH BVH.
-AccelType parse_accel_type(const std::string& name);
+// What logs and reports call it: "embree", "bvh-sah", "bvh-median", "bvh-center", "grid".
 std::string accel_type_name(AccelType type);
-// Every accelerator, Embree first: "embree", "bvh-sah", "bvh-median", "bvh-center", "grid".
-const std::vector<std::string>& accel_type_names();
+// Every accelerator, Embree first.
+const std::vector<AccelType>& all_accel_types();
 std::unique_ptr<Accel> make_accel(AccelType type, const Scene& scene);
 
 }  // namespace penumbra

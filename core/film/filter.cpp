@@ -73,29 +73,25 @@ float BlackmanHarrisFilter::eval_1d(float x) const {
     return a0 - a1 * portable_cos(w) + a2 * portable_cos(2 * w) - a3 * portable_cos(3 * w);
 }
 
-std::unique_ptr<Filter> make_filter(const std::string& name) {
-    if (name == "box") return std::make_unique<BoxFilter>();
-    if (name == "gaussian") return std::make_unique<GaussianFilter>();
-    if (name == "blackman-harris") return std::make_unique<BlackmanHarrisFilter>();
-    throw std::invalid_argument("unknown filter '" + name +
-                                "' (expected box, gaussian or blackman-harris)");
+std::unique_ptr<Filter> make_filter(FilterType type) {
+    switch (type) {
+        case FilterType::Box: return std::make_unique<BoxFilter>();
+        case FilterType::Gaussian: return std::make_unique<GaussianFilter>();
+        case FilterType::BlackmanHarris: return std::make_unique<BlackmanHarrisFilter>();
+    }
+    throw std::invalid_argument("unknown filter type");
 }
 
-const Filter& shared_filter(const std::string& name) {
-    if (name == "box") {
-        static const BoxFilter box;
-        return box;
+const Filter& shared_filter(FilterType type) {
+    static const BoxFilter box;
+    static const GaussianFilter gaussian;
+    static const BlackmanHarrisFilter blackman_harris;
+    switch (type) {
+        case FilterType::Box: return box;
+        case FilterType::Gaussian: return gaussian;
+        case FilterType::BlackmanHarris: return blackman_harris;
     }
-    if (name == "gaussian") {
-        static const GaussianFilter gaussian;
-        return gaussian;
-    }
-    if (name == "blackman-harris") {
-        static const BlackmanHarrisFilter blackman_harris;
-        return blackman_harris;
-    }
-    make_filter(name);  // throws its error for an unknown name
-    throw std::logic_error("make_filter accepted a filter shared_filter lacks: " + name);
+    throw std::invalid_argument("unknown filter type");
 }
 
 }  // namespace penumbra

@@ -79,11 +79,12 @@ public:
     float eval_1d(float x) const override;
 };
 
-// "box" | "gaussian" | "blackman-harris"; throws std::invalid_argument otherwise.
-std::unique_ptr<Filter> make_filter(const std::string& name);
-// The process's one filter of that name, built on first use (thread-safe): a filter is
+enum class FilterType { Box, Gaussian, BlackmanHarris };
+
+std::unique_ptr<Filter> make_filter(FilterType type);
+// The process's one filter of that type, built on first use (thread-safe): a filter is
 // immutable once tabulated, and tabulating costs about a millisecond, which every pass
 // of every render paid when each made its own.
-const Filter& shared_filter(const std::string& name);
+const Filter& shared_filter(FilterType type);
 
 }  // namespace penumbra

@@ -29,14 +29,6 @@ std::string format(const char* fmt, double a, double b) {
 
 }  // namespace
 
-DefaultLightMode parse_default_light_mode(const std::string& name) {
-    if (name == "auto") return DefaultLightMode::Auto;
-    if (name == "on") return DefaultLightMode::On;
-    if (name == "off") return DefaultLightMode::Off;
-    throw std::invalid_argument("unknown default light mode '" + name +
-                                "' (expected auto, on or off)");
-}
-
 double EmitterSummary::mean_radiance() const { return area > 0 ? power / (kPi * area) : 0; }
 
 EmitterSummary summarize_emitters(const Scene& scene) {

@@ -17,9 +17,6 @@ enum class DefaultLightMode {
     Off,   // never
 };
 
-// "auto", "on" or "off"; throws std::invalid_argument otherwise.
-DefaultLightMode parse_default_light_mode(const std::string& name);
-
 // Irradiance (W/m^2) of the key and the fill light, and the environment's radiance.
 constexpr float kDefaultKeyIrradiance = 2.5f;
 constexpr float kDefaultFillIrradiance = 0.6f;

@@ -12,22 +12,6 @@ namespace {
 constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 }  // namespace
 
-LightSamplerType parse_light_sampler(const std::string& name) {
-    if (name == "uniform") return LightSamplerType::Uniform;
-    if (name == "power") return LightSamplerType::Power;
-    if (name == "bvh") return LightSamplerType::Bvh;
-    if (name == "auto") return LightSamplerType::Auto;
-    throw std::invalid_argument("unknown light sampler '" + name +
-                                "' (expected uniform, power, bvh or auto)");
-}
-
-TriangleSampling parse_triangle_sampling(const std::string& name) {
-    if (name == "area") return TriangleSampling::Area;
-    if (name == "solid-angle") return TriangleSampling::SolidAngle;
-    throw std::invalid_argument("unknown triangle sampling '" + name +
-                                "' (expected area or solid-angle)");
-}
-
 LightSet::LightSet(const Scene& scene, std::unique_ptr<EnvironmentLight> environment,
                    const LightSetOptions& options)
     : m_environment(std::move(environment)), m_type(options.sampler) {

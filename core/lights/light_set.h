@@ -29,10 +29,6 @@ struct SampledLight {
 // Auto: Bvh when at least kAutoBvhLights lights have bounds, else Power.
 enum class LightSamplerType { Uniform, Power, Bvh, Auto };
 constexpr size_t kAutoBvhLights = 64;
-// Throws std::invalid_argument for a name other than uniform, power, bvh or auto.
-LightSamplerType parse_light_sampler(const std::string& name);
-// Throws std::invalid_argument for a name other than area or solid-angle.
-TriangleSampling parse_triangle_sampling(const std::string& name);
 
 // The defaults as measured at equal time (docs/performance.md, "Light sampling at scale"):
 // power for the Cornell box's two triangles, the BVH 4.6-7.2x better for 10,000 emitters

@@ -22,12 +22,4 @@ inline double radiometric_scale(LightUnits units) {
     return units == LightUnits::Photometric ? 1.0 / kLumensPerWatt : 1.0;
 }
 
-// "photometric" or "radiometric"; throws std::invalid_argument otherwise.
-inline LightUnits parse_light_units(const std::string& name) {
-    if (name == "photometric") return LightUnits::Photometric;
-    if (name == "radiometric") return LightUnits::Radiometric;
-    throw std::invalid_argument("unknown light units '" + name +
-                                "' (expected photometric or radiometric)");
-}
-
 }  // namespace penumbra

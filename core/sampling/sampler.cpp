@@ -155,36 +155,9 @@ std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t s
     throw std::invalid_argument("unknown sampler type");
 }
 
-namespace {
-
-// Each sampler's name as the command line and job files spell it: one list for parsing and
-// for headers.
-struct SamplerName {
-    SamplerType type;
-    const char* name;
-};
-constexpr SamplerName kSamplerNames[] = {{SamplerType::Independent, "independent"},
-                                         {SamplerType::Stratified, "stratified"},
-                                         {SamplerType::Sobol, "sobol"},
-                                         {SamplerType::ZSobol, "zsobol"},
-                                         {SamplerType::TabledSobol, "tabled-sobol"}};
-
-}  // namespace
-
-std::string sampler_in_effect(SamplerType type, uint32_t spp) {
-    if (type == SamplerType::TabledSobol && !tabled_sobol_supports(spp))
-        type = SamplerType::Stratified;
-    for (const SamplerName& s : kSamplerNames)
-        if (s.type == type) return s.name;
-    throw std::invalid_argument("unknown sampler type");
-}
-
-SamplerType parse_sampler_type(const std::string& name) {
-    for (const SamplerName& s : kSamplerNames)
-        if (name == s.name) return s.type;
-    throw std::invalid_argument(
-        "unknown sampler '" + name +
-        "' (expected independent, stratified, sobol, zsobol or tabled-sobol)");
+SamplerType sampler_in_effect(SamplerType type, uint32_t spp) {
+    return type == SamplerType::TabledSobol && !tabled_sobol_supports(spp) ? SamplerType::Stratified
+                                                                           : type;
 }
 
 }  // namespace penumbra

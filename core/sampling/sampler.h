@@ -118,11 +118,7 @@ enum class SamplerType { Independent, Stratified, Sobol, ZSobol, TabledSobol };
 // TabledSobol takes power-of-two spp (up to 2^16); for others it gives the stratified
 // sampler.
 std::unique_ptr<Sampler> make_sampler(SamplerType type, uint32_t spp, uint64_t seed);
-// The name (as parse_sampler_type reads it) of the sampler make_sampler gives for spp: what
-// an image's header records.
-std::string sampler_in_effect(SamplerType type, uint32_t spp);
-// "independent" | "stratified" | "sobol" | "zsobol" | "tabled-sobol"; throws
-// std::invalid_argument otherwise.
-SamplerType parse_sampler_type(const std::string& name);
+// The sampler make_sampler gives for spp: what an image's header records.
+SamplerType sampler_in_effect(SamplerType type, uint32_t spp);
 
 }  // namespace penumbra

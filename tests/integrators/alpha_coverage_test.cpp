@@ -17,6 +17,7 @@
 #include "support/statistics/estimate.h"
 #include "support/irradiance.h"
 #include "support/scene_builder.h"
+#include "support/option_names.h"
 
 namespace penumbra {
 namespace {
@@ -75,7 +76,7 @@ void add_plane(Scene& s, float y, int material) {
 // n path samples along `ray`, each from its own sample index.
 std::vector<float> samples(const BlendScene& s, const Ray& ray, int n, IntegratorOptions o = {},
                            const std::string& integrator_name = "path") {
-    const auto integrator = make_integrator(integrator_name, o);
+    const auto integrator = make_integrator(test::integrator_named(integrator_name), o);
     auto sampler = make_sampler(SamplerType::TabledSobol, 64, 3);
     const RenderContext ctx = s.context();
     std::vector<float> v;
@@ -89,7 +90,7 @@ std::vector<float> samples(const BlendScene& s, const Ray& ray, int n, Integrato
 // n independent samples of one ray, each from its own pixel of an independent sampler.
 test::Estimate estimate_ray(const BlendScene& s, const std::string& integrator_name,
                             const IntegratorOptions& o, Vec3 origin, Vec3 dir, uint64_t seed) {
-    const auto integrator = make_integrator(integrator_name, o);
+    const auto integrator = make_integrator(test::integrator_named(integrator_name), o);
     auto sampler = make_sampler(SamplerType::Independent, 1, seed);
     const RenderContext ctx = s.context();
     return test::estimate(40000, [&](uint64_t i) {

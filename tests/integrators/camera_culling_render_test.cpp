@@ -16,6 +16,7 @@
 #include "integrators/render.h"
 #include "materials/lobes/fresnel.h"
 #include "support/scene_builder.h"
+#include "support/option_names.h"
 
 namespace penumbra {
 namespace {
@@ -61,13 +62,13 @@ Film render_view(const Scene& scene, AccelType type, const std::string& integrat
         scene, environment > 0 ? std::make_unique<EnvironmentLight>(Spectrum(environment), 10.0f)
                                : nullptr);
     const RenderContext ctx{scene, *accel, lights};
-    const auto integ = make_integrator(integrator, {});
+    const auto integ = make_integrator(test::integrator_named(integrator), {});
     const PerspectiveCamera camera(eye, yfov, kSize, kSize);
     RenderOptions opt;
     opt.spp = 4;
     opt.seed = 9;
     opt.progress = false;
-    opt.filter = "box";
+    opt.filter = FilterType::Box;
     opt.aovs = aovs;
     return render(ctx, camera, *integ, opt);
 }
@@ -163,7 +164,7 @@ TEST(CameraCullingRender, TheInsideIsLitAsWithoutCulling) {
     const Scene culled = room(false, true), reference = room(true, true);
     const PerspectiveCamera camera(kOutside, 0.3f, kSize, kSize);
     for (const char* integrator : kIntegrators) {
-        const auto integ = make_integrator(integrator, {});
+        const auto integ = make_integrator(test::integrator_named(integrator), {});
         const auto accel = make_accel(AccelType::Embree, culled);
         const auto ref_accel = make_accel(AccelType::Embree, reference);
         const LightSet lights(culled, nullptr), ref_lights(reference, nullptr);
@@ -306,7 +307,7 @@ TEST(CameraCullingRender, AMirrorShowsTheBackOfASingleSidedSurface) {
     for (const char* integrator : kIntegrators) {
         auto sampler = make_sampler(SamplerType::Independent, 1, 3);
         sampler->start_pixel_sample({0, 0}, 0);
-        const Spectrum L = make_integrator(integrator, {})->Li(ray, ctx, *sampler);
+        const Spectrum L = make_integrator(test::integrator_named(integrator), {})->Li(ray, ctx, *sampler);
         EXPECT_GT(L.z, 0.5f * f.z * 0.8f / kPi) << integrator;
     }
 }

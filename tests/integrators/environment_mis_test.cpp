@@ -113,20 +113,20 @@ TEST(EnvironmentMis, CompensatedDirectLightingIsUnbiased) {
 // Only integrators whose every light sample meets a BSDF sample under MIS may use it.
 TEST(EnvironmentMis, OnlyIntegratorsThatPairLightAndBsdfSamplesAskForIt) {
     IntegratorOptions o;
-    EXPECT_TRUE(make_integrator("path", o)->pairs_light_and_bsdf_samples());
-    EXPECT_TRUE(make_integrator("direct", o)->pairs_light_and_bsdf_samples());
-    EXPECT_FALSE(make_integrator("basic", o)->pairs_light_and_bsdf_samples());
-    EXPECT_FALSE(make_integrator("albedo", o)->pairs_light_and_bsdf_samples());
+    EXPECT_TRUE(make_integrator(IntegratorType::Path, o)->pairs_light_and_bsdf_samples());
+    EXPECT_TRUE(make_integrator(IntegratorType::Direct, o)->pairs_light_and_bsdf_samples());
+    EXPECT_FALSE(make_integrator(IntegratorType::Basic, o)->pairs_light_and_bsdf_samples());
+    EXPECT_FALSE(make_integrator(IntegratorType::Albedo, o)->pairs_light_and_bsdf_samples());
     for (LightStrategy strategy : {LightStrategy::LightOnly, LightStrategy::BsdfOnly}) {
         IntegratorOptions one = o;
         one.strategy = strategy;
-        EXPECT_FALSE(make_integrator("path", one)->pairs_light_and_bsdf_samples());
+        EXPECT_FALSE(make_integrator(IntegratorType::Path, one)->pairs_light_and_bsdf_samples());
     }
     IntegratorOptions lights_only = o, bsdf_only = o;
     lights_only.bsdf_samples = 0;
     bsdf_only.light_samples = 0;
-    EXPECT_FALSE(make_integrator("direct", lights_only)->pairs_light_and_bsdf_samples());
-    EXPECT_FALSE(make_integrator("direct", bsdf_only)->pairs_light_and_bsdf_samples());
+    EXPECT_FALSE(make_integrator(IntegratorType::Direct, lights_only)->pairs_light_and_bsdf_samples());
+    EXPECT_FALSE(make_integrator(IntegratorType::Direct, bsdf_only)->pairs_light_and_bsdf_samples());
 }
 
 }  // namespace

@@ -24,7 +24,7 @@ Frame render_with(const Scene& scene, const IntegratorOptions& iopt, int size, u
     const LightSet lights(scene, nullptr);
     const RenderContext ctx{scene, accel, lights};
     const std::unique_ptr<Camera> camera = make_camera(scene.cameras[0], size, size);
-    const auto integrator = make_integrator("path", iopt);
+    const auto integrator = make_integrator(IntegratorType::Path, iopt);
     RenderOptions opt;
     opt.spp = spp;
     opt.seed = seed;

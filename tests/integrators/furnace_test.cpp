@@ -72,11 +72,11 @@ Image render_furnace(GltfLayering layering, RenderStats* stats) {
                                    2 * std::atan(6.5f / 200), kRes, kRes);
     IntegratorOptions iopt;
     iopt.max_depth = 64;
-    const auto integrator = make_integrator("path", iopt);
+    const auto integrator = make_integrator(IntegratorType::Path, iopt);
     RenderOptions opt;
     opt.spp = 32;
     opt.progress = false;
-    opt.filter = "box";
+    opt.filter = FilterType::Box;
     return render(ctx, camera, *integrator, opt, stats).resolve();
 }
 

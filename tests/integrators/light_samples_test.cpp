@@ -61,12 +61,12 @@ Residuals render_residuals(int light_samples, const LightSetOptions& light_optio
     IntegratorOptions iopt;
     iopt.light_samples = light_samples;
     iopt.bsdf_samples = 0;
-    const auto integrator = make_integrator("direct", iopt);
+    const auto integrator = make_integrator(IntegratorType::Direct, iopt);
     RenderOptions opt;
     opt.spp = 1;
     opt.seed = 5;
     opt.progress = false;
-    opt.filter = "box";
+    opt.filter = FilterType::Box;
     const Image img = render(ctx, camera, *integrator, opt).resolve();
     double sum = 0, sum2 = 0;
     for (int y = 0; y < kRes; ++y)

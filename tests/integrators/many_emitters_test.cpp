@@ -12,6 +12,7 @@
 #include "integrators/integrator.h"
 #include "support/statistics/estimate.h"
 #include "support/scene_builder.h"
+#include "support/option_names.h"
 
 namespace penumbra {
 namespace {
@@ -83,7 +84,7 @@ std::unique_ptr<Setup> floor_under_emitters() {
 
 test::Estimate floor_radiance(const Setup& s, const LightSet& lights, const std::string& name,
                               const IntegratorOptions& o, uint64_t n) {
-    const auto integrator = make_integrator(name, o);
+    const auto integrator = make_integrator(test::integrator_named(name), o);
     auto sampler = make_sampler(SamplerType::Independent, 1, 5);
     const RenderContext ctx{s.scene, *s.accel, lights};
     return test::estimate(n, [&](uint64_t i) {

@@ -20,12 +20,12 @@ Image render_with(const Scene& scene, AccelType type, const Camera& camera, uint
     const auto accel = make_accel(type, scene);
     const LightSet lights(scene, nullptr);
     const RenderContext ctx{scene, *accel, lights};
-    const auto integrator = make_integrator("path", {});
+    const auto integrator = make_integrator(IntegratorType::Path, {});
     RenderOptions opt;
     opt.spp = spp;
     opt.seed = 3;
     opt.progress = false;
-    opt.filter = "box";
+    opt.filter = FilterType::Box;
     return render(ctx, camera, *integrator, opt).resolve();
 }
 

@@ -73,12 +73,12 @@ ImageMean render_mean(const Scene& scene, LightStrategy strategy) {
     IntegratorOptions iopt;
     iopt.strategy = strategy;
     iopt.max_depth = 1;  // direct light only: the exact answer is the irradiance
-    const auto integrator = make_integrator("path", iopt);
+    const auto integrator = make_integrator(IntegratorType::Path, iopt);
     RenderOptions opt;
     opt.spp = 256;
     opt.seed = 11;
     opt.progress = false;
-    opt.filter = "box";
+    opt.filter = FilterType::Box;
     const Image img = render(ctx, camera, *integrator, opt).resolve();
     double sum = 0, sum2 = 0;
     for (int y = 0; y < kHt; ++y)

@@ -92,7 +92,7 @@ double slab_estimate(const std::vector<MaterialDesc>& volumes, double* se) {
     IntegratorOptions opt;
     opt.max_depth = 64;
     opt.rr_depth = 1000;
-    const auto integrator = make_integrator("path", opt);
+    const auto integrator = make_integrator(IntegratorType::Path, opt);
     IndependentSampler sampler(1, 7);
     const test::Estimate e = test::estimate(20000, [&](uint64_t i) {
         sampler.start_pixel_sample({0, 0}, uint32_t(i));

@@ -121,7 +121,7 @@ TEST(DirectIntegrator, ConvexBoxUnderUniformEnvironmentMatchesForAnySampleSplit)
         IntegratorOptions opt;
         opt.light_samples = nl;
         opt.bsdf_samples = nb;
-        const auto integrator = make_integrator("direct", opt);
+        const auto integrator = make_integrator(IntegratorType::Direct, opt);
         const test::Estimate e =
             measure(*s, *integrator, SamplerType::Independent, {0, 0, 0}, true, 10000);
         EXPECT_TRUE(test::within(e, a * L))

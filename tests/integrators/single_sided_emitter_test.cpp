@@ -12,6 +12,7 @@
 #include "support/gltf_builder.h"
 #include "support/irradiance.h"
 #include "support/scene_builder.h"
+#include "support/option_names.h"
 
 namespace penumbra {
 namespace {
@@ -77,7 +78,7 @@ std::vector<Config> configs() {
 // Radiance of the floor point under the emitter's centre, seen from straight above it
 // (from below the emitter).
 test::Estimate floor_radiance(const Setup& s, const Config& c, uint64_t n) {
-    const auto integrator = make_integrator(c.integrator, c.options);
+    const auto integrator = make_integrator(test::integrator_named(c.integrator), c.options);
     auto sampler = make_sampler(SamplerType::Independent, 1, 5);
     const RenderContext ctx{s.scene, *s.accel, *s.lights};
     return test::estimate(n, [&](uint64_t i) {
@@ -92,7 +93,7 @@ test::Estimate floor_radiance(const Setup& s, const Config& c, uint64_t n) {
 // The emitter's face seen from `eye` straight along Y (through its centre), by a ray that
 // meets its back as a bounce does (camera rays pass through it: CameraCullingRender).
 float seen_emitter(const Setup& s, const std::string& integrator, float eye_y) {
-    const auto integ = make_integrator(integrator, {});
+    const auto integ = make_integrator(test::integrator_named(integrator), {});
     auto sampler = make_sampler(SamplerType::Independent, 1, 5);
     RenderContext ctx{s.scene, *s.accel, *s.lights};
     ctx.camera_culling = false;

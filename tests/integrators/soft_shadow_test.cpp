@@ -87,11 +87,11 @@ Profile render_profile(float a) {
     IntegratorOptions iopt;
     iopt.light_samples = 16;
     iopt.bsdf_samples = 0;
-    const auto integrator = make_integrator("direct", iopt);
+    const auto integrator = make_integrator(IntegratorType::Direct, iopt);
     RenderOptions opt;
     opt.spp = 64;
     opt.progress = false;
-    opt.filter = "box";
+    opt.filter = FilterType::Box;
     const Image img = render(ctx, camera, *integrator, opt).resolve();
 
     Profile p;

@@ -35,11 +35,11 @@ SphereStats render_sphere(const MaterialDesc& m, MicrofacetType type, int spp) {
                                    2 * std::atan(1.2f / 50), res, res);
     IntegratorOptions iopt;
     iopt.max_depth = 64;
-    const auto integrator = make_integrator("path", iopt);
+    const auto integrator = make_integrator(IntegratorType::Path, iopt);
     RenderOptions opt;
     opt.spp = spp;
     opt.progress = false;
-    opt.filter = "box";
+    opt.filter = FilterType::Box;
     RenderStats stats;
     const Image img = render(ctx, camera, *integrator, opt, &stats).resolve();
     EXPECT_EQ(stats.nonfinite_samples, 0u);

@@ -14,6 +14,7 @@
 #include "core/media/homogeneous_medium.h"
 #include "integrators/integrator.h"
 #include "support/scene_builder.h"
+#include "support/option_names.h"
 
 namespace penumbra {
 namespace {
@@ -70,7 +71,7 @@ struct Tracer {
         IntegratorOptions opt;
         opt.max_depth = 16;
         opt.rr_depth = 100;  // no Russian roulette: every path here is one exact line
-        const auto integ = make_integrator(integrator, opt);
+        const auto integ = make_integrator(test::integrator_named(integrator), opt);
         IndependentSampler sampler(1, 0);
         sampler.start_pixel_sample({0, 0}, index);
         Ray r;

@@ -1,13 +1,29 @@
 // Job files: defaults and per-scene overrides, paths relative to the file, and errors
 // that name the file and the element; and the frame-list syntax.
 #include "job/job_file.h"
+#include "job/option_table.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
 
 #include "core/error.h"
 
 namespace penumbra {
 namespace {
+
+// A key's value as the job file gave it (the option's text); nullopt when unset.
+std::optional<std::string> value(const JobSettings& settings, const std::string& key) {
+    for (const JobSetting& s : settings)
+        if (s.option->job_key == key) return s.text;
+    return std::nullopt;
+}
+
+double number(const JobSettings& settings, const std::string& key) {
+    const std::optional<std::string> v = value(settings, key);
+    return v ? std::stod(*v) : std::nan("");
+}
 
 TEST(JobFile, ReadsDefaultsAndEntriesWithPathsRelativeToTheFile) {
     const JobFile f = parse_job_file(R"({
@@ -18,24 +34,24 @@ TEST(JobFile, ReadsDefaultsAndEntriesWithPathsRelativeToTheFile) {
              "output": "x/b.exr", "frames": "1-3", "fps": 30, "time_limit": 60}
         ]})",
                                      "/work/jobs/batch.json");
-    EXPECT_EQ(f.defaults.spp, 64u);
-    EXPECT_EQ(f.defaults.width, 320);
-    EXPECT_EQ(f.defaults.integrator, "path");
-    EXPECT_EQ(f.defaults.out_dir, "/work/jobs/renders");
+    EXPECT_EQ(number(f.defaults, "spp"), 64);
+    EXPECT_EQ(number(f.defaults, "width"), 320);
+    EXPECT_EQ(value(f.defaults, "integrator"), "path");
+    EXPECT_EQ(value(f.defaults, "out_dir"), "/work/jobs/renders");
     ASSERT_EQ(f.jobs.size(), 2u);
     EXPECT_EQ(f.jobs[0].scene, "/work/jobs/a.gltf");
-    EXPECT_FALSE(f.jobs[0].settings.spp);  // unset: inherits
+    EXPECT_FALSE(value(f.jobs[0].settings, "spp"));  // unset: inherits
     EXPECT_EQ(f.jobs[0].where, "/work/jobs/batch.json: jobs[0]");
     const JobSettings& b = f.jobs[1].settings;
     EXPECT_EQ(f.jobs[1].scene, "/abs/b.glb");
-    EXPECT_EQ(b.camera, "side");
-    EXPECT_EQ(b.height, 200);
-    EXPECT_EQ(b.seed, 7u);
-    EXPECT_EQ(b.time, 1.5);
-    EXPECT_EQ(b.output, "/work/jobs/x/b.exr");
-    EXPECT_EQ(b.frames, "1-3");
-    EXPECT_EQ(b.fps, 30.0);
-    EXPECT_EQ(b.time_limit, 60.0);
+    EXPECT_EQ(value(b, "camera"), "side");
+    EXPECT_EQ(number(b, "height"), 200);
+    EXPECT_EQ(number(b, "seed"), 7);
+    EXPECT_EQ(number(b, "time"), 1.5);
+    EXPECT_EQ(value(b, "output"), "/work/jobs/x/b.exr");
+    EXPECT_EQ(value(b, "frames"), "1-3");
+    EXPECT_EQ(number(b, "fps"), 30.0);
+    EXPECT_EQ(number(b, "time_limit"), 60.0);
 }
 
 TEST(JobFile, ErrorsNameTheFileAndElement) {
@@ -75,9 +91,9 @@ TEST(JobFile, ShutterKeys) {
         R"({"defaults": {"shutter": 0.5, "fps": 30},
             "jobs": [{"scene": "a.gltf", "shutter_open": 1.25, "shutter_close": 1.5}]})",
         "j.json");
-    EXPECT_EQ(f.defaults.shutter, 0.5);
-    EXPECT_EQ(f.jobs[0].settings.shutter_open, 1.25);
-    EXPECT_EQ(f.jobs[0].settings.shutter_close, 1.5);
+    EXPECT_EQ(number(f.defaults, "shutter"), 0.5);
+    EXPECT_EQ(number(f.jobs[0].settings, "shutter_open"), 1.25);
+    EXPECT_EQ(number(f.jobs[0].settings, "shutter_close"), 1.5);
     try {
         parse_job_file(R"({"jobs": [{"scene": "a.gltf", "shutter": 2}]})", "j.json");
         FAIL() << "no error";
@@ -95,18 +111,18 @@ TEST(JobFile, ColourAndOutputKeys) {
                       "aov": "albedo,depth", "compression": "piz", "half": false}]})",
         "/jobs/j.json");
     // A config path is relative to the job file; "builtin" is a name, not a path.
-    EXPECT_EQ(f.defaults.ocio_config, "/jobs/configs/studio.ocio");
-    EXPECT_EQ(f.defaults.view, "Raw");
-    EXPECT_EQ(f.defaults.half, true);
+    EXPECT_EQ(value(f.defaults, "ocio_config"), "/jobs/configs/studio.ocio");
+    EXPECT_EQ(value(f.defaults, "view"), "Raw");
+    EXPECT_EQ(value(f.defaults, "half"), "1");
     const JobSettings& s = f.jobs[0].settings;
-    EXPECT_EQ(s.ocio_config, "builtin");
-    EXPECT_EQ(s.working_space, "ACEScg");
-    EXPECT_EQ(s.output_colorspace, "ACES2065-1");
-    EXPECT_EQ(s.display, "sRGB");
-    EXPECT_EQ(s.look, "none");
-    EXPECT_EQ(s.aov, "albedo,depth");
-    EXPECT_EQ(s.compression, "piz");
-    EXPECT_EQ(s.half, false);
+    EXPECT_EQ(value(s, "ocio_config"), "builtin");
+    EXPECT_EQ(value(s, "working_space"), "ACEScg");
+    EXPECT_EQ(value(s, "output_colorspace"), "ACES2065-1");
+    EXPECT_EQ(value(s, "display"), "sRGB");
+    EXPECT_EQ(value(s, "look"), "none");
+    EXPECT_EQ(value(s, "aov"), "albedo,depth");
+    EXPECT_EQ(value(s, "compression"), "piz");
+    EXPECT_EQ(value(s, "half"), "0");
     try {
         parse_job_file(R"({"jobs": [{"scene": "a.gltf", "half": "yes"}]})", "j.json");
         FAIL() << "no error";
@@ -122,18 +138,18 @@ TEST(JobFile, LightKeys) {
                       "triangle_sampling": "area", "env_sampling": "full",
                       "no_file_lights": true}]})",
         "/jobs/j.json");
-    EXPECT_EQ(f.defaults.light_sampler, "power");
-    EXPECT_EQ(f.jobs[0].settings.triangle_sampling, "area");
-    EXPECT_EQ(f.jobs[0].settings.env_sampling, "full");
-    EXPECT_FALSE(f.defaults.env_sampling);
-    EXPECT_EQ(f.defaults.light_units, "radiometric");
-    EXPECT_EQ(f.defaults.exposure, 1.5);
-    EXPECT_FALSE(f.defaults.default_light);
-    EXPECT_EQ(f.jobs[0].settings.default_light, "off");
-    EXPECT_EQ(f.jobs[0].settings.exposure, -2.0);
-    EXPECT_FALSE(f.jobs[0].settings.light_units);
-    EXPECT_EQ(f.jobs[0].settings.no_file_lights, true);
-    EXPECT_FALSE(f.defaults.no_file_lights);
+    EXPECT_EQ(value(f.defaults, "light_sampler"), "power");
+    EXPECT_EQ(value(f.jobs[0].settings, "triangle_sampling"), "area");
+    EXPECT_EQ(value(f.jobs[0].settings, "env_sampling"), "full");
+    EXPECT_FALSE(value(f.defaults, "env_sampling"));
+    EXPECT_EQ(value(f.defaults, "light_units"), "radiometric");
+    EXPECT_EQ(number(f.defaults, "exposure"), 1.5);
+    EXPECT_FALSE(value(f.defaults, "default_light"));
+    EXPECT_EQ(value(f.jobs[0].settings, "default_light"), "off");
+    EXPECT_EQ(number(f.jobs[0].settings, "exposure"), -2.0);
+    EXPECT_FALSE(value(f.jobs[0].settings, "light_units"));
+    EXPECT_EQ(value(f.jobs[0].settings, "no_file_lights"), "1");
+    EXPECT_FALSE(value(f.defaults, "no_file_lights"));
     const std::pair<const char*, const char*> bad[] = {
         {R"("light_units": "lumens")",
          "j.json: jobs[0].light_units: 'lumens' is not one of: photometric, radiometric"},
@@ -166,13 +182,13 @@ TEST(JobFile, AdaptiveAndFireflyKeys) {
             "jobs": [{"scene": "a.gltf", "clamp_direct": 20, "clamp_indirect": 10,
                       "regularize": 0.3}]})",
         "/jobs/j.json");
-    EXPECT_EQ(f.defaults.target_error, 0.05);
-    EXPECT_EQ(f.defaults.adaptive_min_spp, 32);
-    EXPECT_FALSE(f.defaults.clamp_indirect);
-    EXPECT_EQ(f.jobs[0].settings.clamp_direct, 20.0);
-    EXPECT_EQ(f.jobs[0].settings.clamp_indirect, 10.0);
-    EXPECT_EQ(f.jobs[0].settings.regularize, 0.3);
-    EXPECT_FALSE(f.jobs[0].settings.target_error);
+    EXPECT_EQ(number(f.defaults, "target_error"), 0.05);
+    EXPECT_EQ(number(f.defaults, "adaptive_min_spp"), 32);
+    EXPECT_FALSE(value(f.defaults, "clamp_indirect"));
+    EXPECT_EQ(number(f.jobs[0].settings, "clamp_direct"), 20.0);
+    EXPECT_EQ(number(f.jobs[0].settings, "clamp_indirect"), 10.0);
+    EXPECT_EQ(number(f.jobs[0].settings, "regularize"), 0.3);
+    EXPECT_FALSE(value(f.jobs[0].settings, "target_error"));
     const std::pair<const char*, const char*> bad[] = {
         {R"("target_error": 0)", "j.json: jobs[0].target_error: expected a positive number"},
         {R"("target_error": "low")", "j.json: jobs[0].target_error: expected a positive number"},
@@ -195,9 +211,9 @@ TEST(JobFile, DenoiseKey) {
         R"({"defaults": {"denoise": true},
             "jobs": [{"scene": "a.gltf"}, {"scene": "b.gltf", "denoise": false}]})",
         "/jobs/j.json");
-    EXPECT_EQ(f.defaults.denoise, true);
-    EXPECT_FALSE(f.jobs[0].settings.denoise);
-    EXPECT_EQ(f.jobs[1].settings.denoise, false);
+    EXPECT_EQ(value(f.defaults, "denoise"), "1");
+    EXPECT_FALSE(value(f.jobs[0].settings, "denoise"));
+    EXPECT_EQ(value(f.jobs[1].settings, "denoise"), "0");
     try {
         parse_job_file(R"({"jobs": [{"scene": "a.gltf", "denoise": 1}]})", "j.json");
         FAIL() << "a number was taken for a flag";
@@ -211,10 +227,10 @@ TEST(JobFile, StrictAndTextureLimitKeys) {
         R"({"defaults": {"strict": true, "max_texture_pixels": 4096},
             "jobs": [{"scene": "a.gltf", "strict": false}]})",
         "/jobs/j.json");
-    EXPECT_EQ(f.defaults.strict, true);
-    EXPECT_EQ(f.defaults.max_texture_pixels, 4096u);
-    EXPECT_EQ(f.jobs[0].settings.strict, false);
-    EXPECT_FALSE(f.jobs[0].settings.max_texture_pixels);
+    EXPECT_EQ(value(f.defaults, "strict"), "1");
+    EXPECT_EQ(number(f.defaults, "max_texture_pixels"), 4096);
+    EXPECT_EQ(value(f.jobs[0].settings, "strict"), "0");
+    EXPECT_FALSE(value(f.jobs[0].settings, "max_texture_pixels"));
     const std::pair<const char*, const char*> bad[] = {
         {R"("strict": "yes")", "j.json: jobs[0].strict: expected true or false"},
         {R"("max_texture_pixels": 0)",

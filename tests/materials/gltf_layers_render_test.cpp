@@ -36,11 +36,11 @@ Image render_sphere(const MaterialDesc& m, int res, int spp, Spectrum environmen
                                    2 * std::atan(1.2f / 50), res, res);
     IntegratorOptions iopt;
     iopt.max_depth = 64;
-    const auto integrator = make_integrator("path", iopt);
+    const auto integrator = make_integrator(IntegratorType::Path, iopt);
     RenderOptions opt;
     opt.spp = spp;
     opt.progress = false;
-    opt.filter = "box";
+    opt.filter = FilterType::Box;
     RenderStats stats;
     Image img = render(ctx, camera, *integrator, opt, &stats).resolve();
     EXPECT_EQ(stats.nonfinite_samples, 0u);

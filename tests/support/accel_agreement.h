@@ -37,9 +37,10 @@ inline std::vector<AgreementReport> expect_agreement(const Scene& scene, size_t 
     const std::vector<CheckRay> rays = agreement_rays(scene, embree, random, surface);
     const TraceResults reference = trace_rays(embree, rays);
     std::vector<AgreementReport> reports;
-    for (const std::string& name : accel_type_names()) {
+    for (const AccelType type : all_accel_types()) {
+        const std::string name = accel_type_name(type);
         if (name == "embree") continue;
-        const auto accel = make_accel(parse_accel_type(name), scene);
+        const auto accel = make_accel(type, scene);
         AgreementReport rep =
             compare_results(scene, rays, reference, trace_rays(*accel, rays), "embree", name);
         std::string examples;

@@ -1,4 +1,5 @@
 #include "support/render_scene.h"
+#include "support/option_names.h"
 
 #include "core/accel/embree_accel.h"
 #include "integrators/render.h"
@@ -13,12 +14,12 @@ SceneRender render_scene(const Scene& scene, const Camera& camera, const std::st
     const RenderContext ctx{scene, accel, lights};
     IntegratorOptions iopt;
     iopt.max_depth = max_depth;
-    const auto integ = make_integrator(integrator, iopt);
+    const auto integ = make_integrator(test::integrator_named(integrator), iopt);
     RenderOptions opt;
     opt.spp = spp;
     opt.seed = seed;
     opt.progress = false;
-    opt.filter = "box";
+    opt.filter = FilterType::Box;
     RenderStats stats;
     SceneRender out;
     out.image = render(ctx, camera, *integ, opt, &stats).resolve();

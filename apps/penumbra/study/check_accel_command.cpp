@@ -1,6 +1,6 @@
 #include "apps/penumbra/study/check_accel_command.h"
 
-#include "apps/penumbra/timeline_options.h"
+#include "apps/penumbra/option_cli.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -54,7 +54,7 @@ void add_check_accel_command(CLI::App& app, CheckAccelOptions& o) {
                     "Also check Embree under these instruction sets against its default "
                     "(sse4.2, avx2, avx512; Embree's device config isa=...)")
         ->delimiter(',');
-    add_timeline_options(cmd, o.timeline, false);
+    add_declared_options(cmd, o.timing, is_timeline_option);
 }
 
 namespace {
@@ -135,7 +135,7 @@ void compare_images(const Scene& scene, const CameraDesc& cam_desc, int width, i
     if (scene.lights.empty() && !has_emission(scene))
         env = std::make_unique<EnvironmentLight>(Spectrum(1.0f), scene_radius(scene));
     const LightSet lights(scene, std::move(env));
-    const std::unique_ptr<Integrator> integrator = make_integrator("basic", {});
+    const std::unique_ptr<Integrator> integrator = make_integrator(IntegratorType::Basic, {});
     const std::unique_ptr<Camera> camera = make_camera(cam_desc, width, height);
     RenderOptions ropt;
     ropt.spp = spp;
@@ -163,9 +163,11 @@ std::vector<std::unique_ptr<Accel>> build_accels(const Scene& scene,
                                                  const std::vector<std::string>& embree_isas,
                                                  std::vector<std::string>& names) {
     std::vector<std::unique_ptr<Accel>> accels;
-    names = accel_type_names();
-    for (const std::string& name : accel_type_names())
-        accels.push_back(make_accel(parse_accel_type(name), scene));
+    names.clear();
+    for (const AccelType type : all_accel_types()) {
+        accels.push_back(make_accel(type, scene));
+        names.push_back(accel_type_name(type));
+    }
     for (const std::string& isa : embree_isas) {
         EmbreeBuildOptions eo;
         eo.device_config = "isa=" + isa;
@@ -248,7 +250,7 @@ int run_check_accel_command(const CheckAccelOptions& o) {
     set_log_level(LogLevel::Warning);
     GltfLoadOptions load;
     try {
-        const ShutterInterval shutter = resolve_shutter(o.timeline);
+        const ShutterInterval shutter = resolve_shutter(o.timing.timeline);
         load.shutter_open = shutter.open;
         load.shutter_close = shutter.close;
     } catch (const std::invalid_argument& e) {

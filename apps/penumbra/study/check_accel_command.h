@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "job/timeline.h"
+#include "job/render_options.h"
 
 namespace penumbra {
 
@@ -22,7 +22,8 @@ struct CheckAccelOptions {
     // Also Embree under these instruction sets ("sse4.2", "avx2", "avx512"), each an
     // accelerator of its own checked against the default Embree.
     std::vector<std::string> embree_isas;
-    TimelineSettings timeline;  // --time, --shutter-open/-close, --frame/--fps/--shutter
+    // Its timeline: --time, --shutter-open/-close, --frame/--fps/--shutter.
+    RenderCommandOptions timing;
 };
 
 void add_check_accel_command(CLI::App& app, CheckAccelOptions& options);

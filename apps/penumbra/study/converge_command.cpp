@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "apps/penumbra/study/converge_measure.h"
+#include "apps/penumbra/option_cli.h"
 #include "apps/penumbra/scene_setup.h"
 #include "study/svg_plot.h"
 #include "core/film/image_error.h"
@@ -17,6 +18,7 @@
 #include "io/atomic_file.h"
 #include "io/image/image_writer.h"
 #include "io/image/render_writer.h"
+#include "job/option_table.h"
 
 namespace penumbra {
 
@@ -73,9 +75,8 @@ void add_converge_command(CLI::App& app, ConvergeOptions& o) {
     cmd->add_flag("--bias-variance", o.bias_variance,
                   "Split relMSE into the variance estimated from two independent halves of "
                   "the samples and the rest (bias^2 and the reference's noise): shows what "
-                  "--clamp-indirect or --regularize trade");
-    add_image_options(cmd, o.base);
-    cmd->add_flag("-q,--quiet", o.base.quiet, "Only print errors and the summary");
+                  "clamping or regularization trade");
+    add_declared_options(cmd, o.base, is_image_option);
 }
 
 namespace {
@@ -91,7 +92,7 @@ ConvergeConfig parse_config(const RenderCommandOptions& base, const std::string&
     ConvergeConfig c{trim(name), base};
     if (c.name.empty()) throw SceneError("configuration '" + args + "' has no name");
     CLI::App parser{"configuration " + c.name};
-    add_image_options(&parser, c.options);
+    add_declared_options(&parser, c.options, is_image_option);
     try {
         parser.parse(args, false);
     } catch (const CLI::ParseError& e) {
@@ -137,13 +138,12 @@ Image render_reference(const ConvergeOptions& o, const RenderCommandOptions& bas
     RenderStats stats;
     const Image ref = render_image(*s, render_options_for(ro, "reference"), stats);
     const std::string path = (fs::path(o.out_dir) / "reference.exr").string();
-    const std::string sampler = sampler_in_effect(parse_sampler_type(ro.sampler), ro.spp);
     write_exr(path, ref,
               {{"penumbra:scene", o.scene},
                {"penumbra:spp", std::to_string(stats.spp)},
                {"penumbra:seed", std::to_string(ro.seed)},
-               {"penumbra:sampler", sampler},
-               {"penumbra:integrator", ro.integrator}});
+               {"penumbra:sampler", sampler_name(sampler_in_effect(ro.sampler, ro.spp))},
+               {"penumbra:integrator", render_option("integrator").get(ro)}});
     if (!base.quiet)
         std::printf("reference: %u spp in %s -> %s\n", stats.spp,
                     format_duration(stats.seconds).c_str(), path.c_str());

@@ -99,8 +99,9 @@ TEST(MotionAccel, AgreesWithEmbreeOnDeformingMeshes) {
 // would agree with itself trivially.
 TEST(MotionAccel, TimeChangesTheAnswer) {
     const Scene scene = make_deforming_sphere();
-    for (const std::string& name : accel_type_names()) {
-        const auto accel = make_accel(parse_accel_type(name), scene);
+    for (const AccelType type : all_accel_types()) {
+        const std::string name = accel_type_name(type);
+        const auto accel = make_accel(type, scene);
         Ray r;
         r.o = Vec3(0.4f, 0, 5);
         r.d = Vec3(0, 0, -1);
@@ -125,8 +126,9 @@ TEST(MotionAccel, RotationDoesNotShrinkObjects) {
         const uint32_t i = test::add_instance(scene, cube, rest);
         scene.instances[i].motion = {rest,
                                      Transform::rotate(axis_angle(Vec3(0, 0, 1), turn)) * rest};
-        for (const std::string& name : accel_type_names()) {
-            const auto accel = make_accel(parse_accel_type(name), scene);
+        for (const AccelType type : all_accel_types()) {
+            const std::string name = accel_type_name(type);
+            const auto accel = make_accel(type, scene);
             for (float u : {0.25f, 0.5f, 0.75f}) {
                 const float a = turn * u;
                 const Vec3 dir(std::cos(a), std::sin(a), 0);
@@ -154,9 +156,10 @@ TEST(MotionAccel, StaticInstancesAreUnchangedBesideMovingOnes) {
     mixed.instances[i].motion = {mixed.instances[i].to_world,
                                  Transform::translate(Vec3(101, 0, 0))};
     const auto rays = make_random_rays(still, 20000, 4);
-    for (const std::string& name : accel_type_names()) {
-        const auto a = make_accel(parse_accel_type(name), still);
-        const auto b = make_accel(parse_accel_type(name), mixed);
+    for (const AccelType type : all_accel_types()) {
+        const std::string name = accel_type_name(type);
+        const auto a = make_accel(type, still);
+        const auto b = make_accel(type, mixed);
         for (const CheckRay& r : rays) {
             const auto ha = a->intersect(r.ray);
             const auto hb = b->intersect(r.ray);

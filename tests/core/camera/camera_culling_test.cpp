@@ -36,8 +36,9 @@ bool culled_from(const Scene& scene, float from_z) {
     ray.o = Vec3(0.2f, 0.3f, from_z);
     ray.d = Vec3(0, 0, from_z > 0 ? -1.0f : 1.0f);
     std::optional<bool> first;
-    for (const std::string& name : accel_type_names()) {
-        const auto accel = make_accel(parse_accel_type(name), scene);
+    for (const AccelType type : all_accel_types()) {
+        const std::string name = accel_type_name(type);
+        const auto accel = make_accel(type, scene);
         const std::optional<Hit> hit = accel->intersect(ray);
         EXPECT_TRUE(hit.has_value()) << name;
         if (!hit) return false;
@@ -113,8 +114,9 @@ TEST(CameraCulling, AutofocusFocusesOnWhatTheCameraSees) {
             test::add_quad_object(scene, {-2, -2, -3}, {2, -2, -3}, {2, 2, -3}, {-2, 2, -3}, far),
             Transform());
         CameraDesc cam;
-        for (const std::string& name : accel_type_names()) {
-            const auto accel = make_accel(parse_accel_type(name), scene);
+        for (const AccelType type : all_accel_types()) {
+            const std::string name = accel_type_name(type);
+            const auto accel = make_accel(type, scene);
             const std::optional<float> d = focus_distance_at(cam, 32, 32, 16, 16, scene, *accel);
             ASSERT_TRUE(d) << name;
             // The centre ray lies on the axis: the depth is the distance, to rounding.

@@ -70,10 +70,10 @@ double blur_variance(float aperture, int blades, float z_focus, float z, float h
     const LightSet lights(scene, nullptr);
     const RenderContext ctx{scene, accel, lights};
     const ThinLensCamera cam(Transform(), yfov, res, res, aperture, z_focus, blades);
-    const auto integrator = make_integrator("basic", {});
+    const auto integrator = make_integrator(IntegratorType::Basic, {});
     RenderOptions opt;
     opt.spp = 128;
-    opt.filter = "box";
+    opt.filter = FilterType::Box;
     opt.progress = false;
     const Image img = render(ctx, cam, *integrator, opt).resolve();
     double w = 0, wx = 0, wx2 = 0;

@@ -30,7 +30,7 @@ struct Cornell {
     LightSet lights{scene, nullptr};
     RenderContext ctx{scene, accel, lights};
     std::unique_ptr<Camera> camera = make_camera(scene.cameras[0], kSize, kSize);
-    std::unique_ptr<Integrator> integrator = make_integrator("path", {});
+    std::unique_ptr<Integrator> integrator = make_integrator(IntegratorType::Path, {});
 };
 
 const Cornell& cornell() {

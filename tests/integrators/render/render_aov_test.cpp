@@ -25,7 +25,7 @@ Result render_sphere(AovSet aovs, int threads, bool in_two_passes = false) {
     const RenderContext ctx{scene, accel, lights};
     const PerspectiveCamera camera(Transform::look_at({0, 0.5f, 4}, {0, 0, 0}, {0, 1, 0}), 0.8f, 24,
                                    18);
-    const auto integrator = make_integrator("path", {});
+    const auto integrator = make_integrator(IntegratorType::Path, {});
     RenderOptions opt;
     opt.spp = 6;
     opt.seed = 3;

@@ -24,7 +24,7 @@ struct Fixture {
     LightSet lights{scene, nullptr};
     RenderContext ctx{scene, accel, lights};
     PerspectiveCamera camera{Transform::look_at({0, 0.5f, 4}, {0, 0, 0}, {0, 1, 0}), 0.8f, kW, kH};
-    std::unique_ptr<Integrator> integrator = make_integrator("path", {});
+    std::unique_ptr<Integrator> integrator = make_integrator(IntegratorType::Path, {});
     RenderOptions opt;
     Fixture() {
         opt.spp = 7;

@@ -40,7 +40,7 @@ TEST(RenderSamplers, LowDiscrepancySamplersAgreeWithIndependentSampling) {
     const int w = 24, h = 18;
     const PerspectiveCamera camera(Transform::look_at({2, 3, 4}, {0, 0.3f, 0}, {0, 1, 0}), 0.7f, w,
                                    h);
-    const auto integrator = make_integrator("path", {});
+    const auto integrator = make_integrator(IntegratorType::Path, {});
     auto quadrants = [&](SamplerType type) {
         std::vector<test::Estimate> q;
         for (int k = 0; k < 4; ++k)
@@ -49,7 +49,7 @@ TEST(RenderSamplers, LowDiscrepancySamplersAgreeWithIndependentSampling) {
                 opt.spp = 16;
                 opt.seed = 100 + seed;
                 opt.sampler = type;
-                opt.filter = "box";
+                opt.filter = FilterType::Box;
                 opt.progress = false;
                 opt.threads = 1;
                 const Image img = render(ctx, camera, *integrator, opt).resolve();

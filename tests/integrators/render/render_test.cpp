@@ -11,6 +11,7 @@
 #include "core/lights/directional_light.h"
 #include "core/lights/point_light.h"
 #include "support/scene_builder.h"
+#include "support/option_names.h"
 
 namespace penumbra {
 namespace {
@@ -43,7 +44,7 @@ TEST(Render, LambertianPlaneUnderDirectionalLightMatchesAnalyticRadiance) {
     // Point and directional light are found only by light sampling, so every integrator
     // gives the exact answer.
     for (const char* name : {"basic", "direct", "path"}) {
-    const auto integrator = make_integrator(name, {});
+    const auto integrator = make_integrator(test::integrator_named(name), {});
     const Image img = render(ctx, camera, *integrator, opt).resolve();
     // L = albedo / pi * E * cos(theta)
     const float expected = 0.5f / kPi * E * std::cos(angle);
@@ -64,7 +65,7 @@ TEST(Render, PointLightFalloffIsInverseSquare) {
     EmbreeAccel accel(scene);
     const LightSet lights(scene, nullptr);
     const RenderContext ctx{scene, accel, lights};
-    const auto integrator = make_integrator("basic", {});
+    const auto integrator = make_integrator(IntegratorType::Basic, {});
     for (float x : {0.0f, 1.0f, 3.0f}) {
         Ray r;
         r.o = {x, 1, 0.001f};
@@ -88,7 +89,7 @@ TEST(Render, ImagesAreBitwiseIdenticalAcrossThreadCounts) {
     const RenderContext ctx{scene, accel, lights};
     const PerspectiveCamera camera(Transform::look_at({2, 3, 4}, {0, 0.3f, 0}, {0, 1, 0}), 0.7f,
                                    40, 30);
-    const auto integrator = make_integrator("path", {});
+    const auto integrator = make_integrator(IntegratorType::Path, {});
     RenderOptions opt;
     opt.spp = 5;
     opt.seed = 1234;
@@ -133,7 +134,7 @@ TEST(Render, PassesAddUpToTheSameImageBitForBit) {
     const RenderContext ctx{scene, accel, lights};
     const PerspectiveCamera camera(Transform::look_at({2, 3, 4}, {0, 0.3f, 0}, {0, 1, 0}), 0.7f,
                                    24, 18);
-    const auto integrator = make_integrator("path", {});
+    const auto integrator = make_integrator(IntegratorType::Path, {});
     RenderOptions opt;
     opt.spp = 7;
     opt.progress = false;
@@ -168,12 +169,12 @@ public:
     }
 
 private:
-    std::unique_ptr<Integrator> m_path = make_integrator("path", {});
+    std::unique_ptr<Integrator> m_path = make_integrator(IntegratorType::Path, {});
 };
 
 TEST(Render, CameraPacketsGiveTheImageOfSingleRays) {
     const Scene scene = cube_on_plane();
-    const auto path = make_integrator("path", {});
+    const auto path = make_integrator(IntegratorType::Path, {});
     ASSERT_TRUE(path->uses_first_hit());
     const SingleRayPath single;
     // 26 x 18 in tiles of 7: full 4 x 2 blocks (packets) and partial ones (single rays).
@@ -206,7 +207,7 @@ TEST(Render, InterruptsAndTimeLimitStopBetweenPasses) {
     const RenderContext ctx{scene, accel, lights};
     const PerspectiveCamera camera(Transform::look_at({2, 3, 4}, {0, 0.3f, 0}, {0, 1, 0}), 0.7f,
                                    16, 12);
-    const auto integrator = make_integrator("path", {});
+    const auto integrator = make_integrator(IntegratorType::Path, {});
     RenderOptions opt;
     opt.spp = 64;
     opt.progress = false;
@@ -237,7 +238,7 @@ TEST(Render, AdaptiveRenderStopsOnlyAfterWholeFixedPasses) {
     const RenderContext ctx{scene, accel, lights};
     const PerspectiveCamera camera(Transform::look_at({2, 3, 4}, {0, 0.3f, 0}, {0, 1, 0}), 0.7f,
                                    24, 18);
-    const auto integrator = make_integrator("path", {});
+    const auto integrator = make_integrator(IntegratorType::Path, {});
     RenderOptions opt;
     opt.spp = 256;
     opt.progress = false;

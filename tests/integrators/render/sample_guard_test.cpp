@@ -46,7 +46,7 @@ TEST(SampleGuard, InjectedNonFiniteSamplesAreCountedAndNeverWritten) {
     RenderOptions opt;
     opt.spp = 8;
     opt.progress = false;
-    opt.filter = "box";
+    opt.filter = FilterType::Box;
     RenderStats stats;
     const Image img = render(ctx, camera, integrator, opt, &stats).resolve();
     ASSERT_GT(integrator.injected.load(), 0u);

@@ -96,7 +96,7 @@ TEST(TextureFootprint, ScenesWithoutTexturesTraceNoCones) {
     with.ray_cones = true;
     const PerspectiveCamera camera(Transform::look_at({0, 0.5f, 4}, {0, 0, 0}, {0, 1, 0}), 0.8f, 24,
                                    16);
-    const auto integrator = make_integrator("path", IntegratorOptions{});
+    const auto integrator = make_integrator(IntegratorType::Path, IntegratorOptions{});
     RenderOptions opt;
     opt.spp = 8;
     opt.progress = false;

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "io/gltf/gltf_loader.h"
 #include "job/job_file.h"
+#include "job/option_table.h"
 #include "support/gltf_builder.h"
 
 namespace penumbra {
@@ -109,9 +110,12 @@ TEST(GltfMaterialVariants, JobFileKey) {
         R"({"defaults": {"variant": "red"}, "jobs": [{"scene": "a.gltf"},
             {"scene": "b.gltf", "variant": "blue"}]})",
         "/jobs/j.json");
-    EXPECT_EQ(job.defaults.variant, "red");
-    EXPECT_FALSE(job.jobs.at(0).settings.variant);
-    EXPECT_EQ(job.jobs.at(1).settings.variant, "blue");
+    ASSERT_EQ(job.defaults.size(), 1u);
+    EXPECT_EQ(job.defaults[0].option->job_key, "variant");
+    EXPECT_EQ(job.defaults[0].text, "red");
+    EXPECT_TRUE(job.jobs.at(0).settings.empty());
+    ASSERT_EQ(job.jobs.at(1).settings.size(), 1u);
+    EXPECT_EQ(job.jobs.at(1).settings[0].text, "blue");
     try {
         parse_job_file(R"({"jobs": [{"scene": "a.gltf", "variant": ""}]})", "j.json");
         FAIL();

@@ -50,7 +50,7 @@ Film render_plane(const PlaneScene& p, AovSet aovs, int threads = 0) {
     const LightSet lights(p.scene, nullptr);
     const RenderContext ctx{p.scene, accel, lights};
     const std::unique_ptr<Camera> camera = make_camera(p.camera, kW, kH);
-    const auto integrator = make_integrator("path", {});
+    const auto integrator = make_integrator(IntegratorType::Path, {});
     RenderOptions opt;
     opt.spp = kSpp;
     opt.progress = false;
