@@ -50,6 +50,7 @@ const char* const kSupportedExtensions[] = {
     "KHR_materials_volume",
     "KHR_mesh_quantization",
     "KHR_meshopt_compression",
+    "KHR_texture_basisu",
     "KHR_texture_transform",
     "EXT_cameras_sensor",
     "EXT_mesh_gpu_instancing",
