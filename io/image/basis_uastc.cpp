@@ -13,21 +13,34 @@ using uastc::BiseRange;
 using uastc::Layout;
 using uastc::Mode;
 
-// The block's bits, least significant first; a block has exactly 128, and every mode's
-// fields fit (the tables are fixed), so reads need no bounds beyond the 128.
+// The block's bits, least significant first, as two 64-bit words; every mode's fields
+// fit in the 128 bits (the tables are fixed), and reads past them give zeros.
 class BlockBits {
 public:
-    explicit BlockBits(const uint8_t* b) : m_b(b) {}
-    uint32_t read(int n) {
-        uint32_t v = 0;
-        for (int i = 0; i < n; ++i, ++m_pos)
-            if (m_pos < 128) v |= uint32_t((m_b[m_pos >> 3] >> (m_pos & 7)) & 1) << i;
-        return v;
+    explicit BlockBits(const uint8_t* b) {
+        for (int i = 7; i >= 0; --i) {
+            m_lo = (m_lo << 8) | b[i];
+            m_hi = (m_hi << 8) | b[i + 8];
+        }
+    }
+    uint32_t read(int n) {  // n <= 32
+        if (n == 0) return 0;
+        uint64_t v = 0;
+        if (m_pos >= 128)
+            v = 0;
+        else if (m_pos >= 64)
+            v = m_hi >> (m_pos - 64);
+        else if (m_pos == 0)
+            v = m_lo;
+        else
+            v = (m_lo >> m_pos) | (m_hi << (64 - m_pos));
+        m_pos += n;
+        return uint32_t(v & ((uint64_t(1) << n) - 1));
     }
     void skip(int n) { m_pos += n; }
 
 private:
-    const uint8_t* m_b;
+    uint64_t m_lo = 0, m_hi = 0;
     int m_pos = 0;
 };
 
