@@ -2,6 +2,7 @@
 
 #include "io/gltf_accessor.h"
 #include "io/gltf_material_json.h"
+#include "io/image/data_uri.h"
 #include "io/image_reader.h"
 
 namespace penumbra {
@@ -218,8 +219,12 @@ int TextureTable::image_index(int index, ImageEncoding encoding, std::string* er
         bytes = &(view = buffer_view_bytes(m_ctx, el, gi.bufferView));
     else if (gi.image.empty() && external)
         m_ctx.fail(el, "cannot read image file '" + gi.uri + "'");
-    else if (gi.image.empty())
+    else if (gi.image.empty() && gi.uri.empty())
         m_ctx.fail(el, "has no image data");
+    else if (gi.image.empty() && !decode_data_uri(gi.uri, &view))  // a MIME type tinygltf skips
+        m_ctx.fail(el, "data: URI is not base64 data");
+    else if (gi.image.empty())
+        bytes = &view;
     const std::string label = external ? gi.uri : gi.name;
     const std::string named = label.empty() ? el : el + " ('" + label + "')";
     TextureDecodeLimits limits;
