@@ -31,7 +31,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     } catch (const penumbra::ImageDecodeError&) {
         // The expected outcome for bad input.
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "ktx2_decoder_fuzzer: decode_ktx2 threw %s, not ImageDecodeError: %s\n",
+        std::fprintf(stderr,
+                     "ktx2_decoder_fuzzer: decode_ktx2 threw %s, not ImageDecodeError: %s\n",
                      typeid(e).name(), e.what());
         std::abort();
     }

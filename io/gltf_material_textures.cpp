@@ -172,7 +172,8 @@ int TextureTable::basisu_image(const tinygltf::Texture& gt, const std::string& e
     const int image = image_index(ktx2, encoding, &why);
     if (image >= 0 || why.empty()) return image;
     const tinygltf::Image& gi = m_ctx.model.images[size_t(ktx2)];
-    const std::string label = gi.uri.compare(0, 5, "data:") != 0 && !gi.uri.empty() ? gi.uri : gi.name;
+    const bool external = !gi.uri.empty() && gi.uri.compare(0, 5, "data:") != 0;
+    const std::string label = external ? gi.uri : gi.name;
     const std::string iel =
         element("images", size_t(ktx2)) + (label.empty() ? "" : " ('" + label + "')");
     if (m_ktx2_required || gt.source == -1)

@@ -14,8 +14,8 @@ uint32_t u32(const uint8_t* p) {
 }
 
 // ETC1's intensity modifiers, by table and by selector ordered from the most negative.
-constexpr int kModifiers[8][4] = {{-8, -2, 2, 8},       {-17, -5, 5, 17},   {-29, -9, 9, 29},
-                                  {-42, -13, 13, 42},   {-60, -18, 18, 60}, {-80, -24, 24, 80},
+constexpr int kModifiers[8][4] = {{-8, -2, 2, 8},       {-17, -5, 5, 17},    {-29, -9, 9, 29},
+                                  {-42, -13, 13, 42},   {-60, -18, 18, 60},  {-80, -24, 24, 80},
                                   {-106, -33, 33, 106}, {-183, -47, 47, 183}};
 
 // Endpoint prediction: one symbol gives 2 bits for each block of a 2x2 group; symbol 256
@@ -57,8 +57,8 @@ BasisLzDecoder::BasisLzDecoder(const uint8_t* sgd, size_t sgd_size, uint32_t ima
     const uint32_t selector_count = uint32_t(sgd[2]) | uint32_t(sgd[3]) << 8;
     const uint64_t ep_len = u32(sgd + 4), sel_len = u32(sgd + 8), tab_len = u32(sgd + 12),
                    ext_len = u32(sgd + 16);
-    const uint64_t need = kHeader + kDesc * uint64_t(image_count) + ep_len + sel_len + tab_len +
-                          ext_len;
+    const uint64_t need =
+        kHeader + kDesc * uint64_t(image_count) + ep_len + sel_len + tab_len + ext_len;
     if (need != sgd_size)
         throw Ktx2Error("BasisLZ global data is " + std::to_string(sgd_size) +
                         " bytes, its lengths add up to " + std::to_string(need));
@@ -224,8 +224,8 @@ void BasisLzDecoder::decode_slice(const uint8_t* data, size_t size, uint32_t blo
     }
 }
 
-void BasisLzDecoder::decode(uint32_t image, const uint8_t* level, size_t level_size,
-                            uint32_t width, uint32_t height, bool alpha, uint8_t* rgba) const {
+void BasisLzDecoder::decode(uint32_t image, const uint8_t* level, size_t level_size, uint32_t width,
+                            uint32_t height, bool alpha, uint8_t* rgba) const {
     if (image >= m_images.size()) throw Ktx2Error("no BasisLZ image descriptor");
     const ImageDesc& d = m_images[image];
     if (d.flags & 2) throw Ktx2Error("BasisLZ P-frames (video) are not supported");

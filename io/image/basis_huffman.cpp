@@ -9,8 +9,8 @@ namespace {
 constexpr int kMaxCodeLength = 16;
 // The code-length code's symbols in the order their 3-bit lengths are sent: the run codes
 // (17: 3-10 zeros, 18: 11-138 zeros, 19: 3-6 repeats, 20: 7-134 repeats) first.
-constexpr uint8_t kCodeLengthOrder[21] = {17, 18, 19, 20, 0, 8, 7, 9, 6, 10, 5,
-                                          11, 4, 12, 3, 13, 2, 14, 1, 15, 16};
+constexpr uint8_t kCodeLengthOrder[21] = {17, 18, 19, 20, 0,  8, 7,  9, 6,  10, 5,
+                                          11, 4,  12, 3,  13, 2, 14, 1, 15, 16};
 
 }  // namespace
 

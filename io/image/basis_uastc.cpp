@@ -110,7 +110,7 @@ void partition(const Mode& m, int mode_index, BlockBits& in, const uint8_t** sub
     *anchors = kSingleAnchor;
     if (m.subsets == 1) return;
     const uint32_t p = in.read(m.subsets == 3 ? 4 : 5);
-    const int limit = mode_index == 7 ? uastc::kPatterns7
+    const int limit = mode_index == 7  ? uastc::kPatterns7
                       : m.subsets == 3 ? uastc::kPatterns3
                                        : uastc::kPatterns2;
     if (p >= uint32_t(limit))

@@ -10,7 +10,8 @@ namespace penumbra {
 
 namespace {
 
-constexpr uint8_t kIdentifier[12] = {0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB, '\r', '\n', 0x1A, '\n'};
+constexpr uint8_t kIdentifier[12] = {0xAB, 'K',  'T',  'X',  ' ',  '2',
+                                     '0',  0xBB, '\r', '\n', 0x1A, '\n'};
 constexpr size_t kHeaderSize = 80, kLevelEntrySize = 24;
 // KHR_DF colour models of the Basis Universal payloads, and the transfer functions.
 constexpr uint32_t kModelEtc1s = 163, kModelUastc = 166;
@@ -54,8 +55,7 @@ void read_dfd(const uint8_t* data, size_t size, uint32_t offset, uint32_t length
     else if (model == kModelUastc)
         info.codec = BasisCodec::Uastc;
     else
-        throw Ktx2Error("DFD colour model " + str(model) +
-                        " is not ETC1S (163) or UASTC (166)");
+        throw Ktx2Error("DFD colour model " + str(model) + " is not ETC1S (163) or UASTC (166)");
     if (transfer != kTransferLinear && transfer != kTransferSrgb)
         throw Ktx2Error("DFD transfer function " + str(transfer) +
                         " is neither linear (1) nor sRGB (2)");
@@ -103,8 +103,7 @@ void read_kvd(const uint8_t* data, size_t size, uint32_t offset, uint32_t length
                 throw Ktx2Error("KTXorientation '" + value + "' (right to left) is not supported");
             info.bottom_up = value[1] == 'u';
         } else if (key == "KTXswizzle") {
-            if (value.size() != 4 ||
-                value.find_first_not_of("rgba01") != std::string::npos)
+            if (value.size() != 4 || value.find_first_not_of("rgba01") != std::string::npos)
                 throw Ktx2Error("KTXswizzle '" + value + "' is not four of r, g, b, a, 0, 1");
             info.swizzle = value;
         }
@@ -144,9 +143,8 @@ Ktx2Info parse_ktx2(const uint8_t* data, size_t size, uint64_t max_pixels) {
     int full_chain = 1;
     while ((std::max(width, height) >> full_chain) > 0) ++full_chain;
     if (level_count > uint32_t(full_chain))
-        throw Ktx2Error("levelCount " + str(level_count) + " is more than the " +
-                        str(full_chain) + " levels of a " + str(width) + "x" + str(height) +
-                        " texture");
+        throw Ktx2Error("levelCount " + str(level_count) + " is more than the " + str(full_chain) +
+                        " levels of a " + str(width) + "x" + str(height) + " texture");
     Ktx2Info info;
     info.width = width;
     info.height = height;

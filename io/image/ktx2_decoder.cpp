@@ -25,28 +25,27 @@ std::vector<uint8_t> uastc_blocks(const uint8_t* file, const Ktx2Info& info, con
     if (info.scheme == Supercompression::None) return std::vector<uint8_t>(src, src + l.length);
     std::vector<uint8_t> out(size_t(l.uncompressed_length));
     const size_t n = ZSTD_decompress(out.data(), out.size(), src, size_t(l.length));
-    if (ZSTD_isError(n))
-        throw Ktx2Error(std::string("Zstandard: ") + ZSTD_getErrorName(n));
+    if (ZSTD_isError(n)) throw Ktx2Error(std::string("Zstandard: ") + ZSTD_getErrorName(n));
     if (n != out.size())
         throw Ktx2Error("Zstandard data decompresses to " + std::to_string(n) + " bytes, not " +
                         std::to_string(out.size()));
     return out;
 }
 
-void decode_uastc_level(const std::vector<uint8_t>& blocks, uint32_t w, uint32_t h,
-                        uint8_t* rgba) {
+void decode_uastc_level(const std::vector<uint8_t>& blocks, uint32_t w, uint32_t h, uint8_t* rgba) {
     const uint32_t bw = (w + 3) / 4, bh = (h + 3) / 4;
-    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, bh), [&](const tbb::blocked_range<uint32_t>& r) {
-        uint8_t texels[64];
-        for (uint32_t by = r.begin(); by < r.end(); ++by)
-            for (uint32_t bx = 0; bx < bw; ++bx) {
-                decode_uastc_block(&blocks[(size_t(by) * bw + bx) * 16], texels);
-                for (uint32_t y = 0; y < 4 && by * 4 + y < h; ++y)
-                    for (uint32_t x = 0; x < 4 && bx * 4 + x < w; ++x)
-                        std::memcpy(rgba + (size_t(by * 4 + y) * w + bx * 4 + x) * 4,
-                                    texels + (y * 4 + x) * 4, 4);
-            }
-    });
+    tbb::parallel_for(
+        tbb::blocked_range<uint32_t>(0, bh), [&](const tbb::blocked_range<uint32_t>& r) {
+            uint8_t texels[64];
+            for (uint32_t by = r.begin(); by < r.end(); ++by)
+                for (uint32_t bx = 0; bx < bw; ++bx) {
+                    decode_uastc_block(&blocks[(size_t(by) * bw + bx) * 16], texels);
+                    for (uint32_t y = 0; y < 4 && by * 4 + y < h; ++y)
+                        for (uint32_t x = 0; x < 4 && bx * 4 + x < w; ++x)
+                            std::memcpy(rgba + (size_t(by * 4 + y) * w + bx * 4 + x) * 4,
+                                        texels + (y * 4 + x) * 4, 4);
+                }
+        });
 }
 
 // RGBA texels into the level's storage: swizzled, `channels` of them, rows flipped for a
@@ -72,17 +71,17 @@ TextureImage decode(const std::vector<uint8_t>& bytes, uint64_t max_pixels, bool
     // Alpha that stays in the texture: the file's, unless the swizzle replaces it.
     const bool alpha = info.swizzle[3] == '1' ? false : info.has_alpha || info.swizzle[3] == '0';
     if (info.premultiplied && alpha)
-        throw Ktx2Error("premultiplied alpha is not supported (glTF textures have straight "
-                        "alpha)");
+        throw Ktx2Error(
+            "premultiplied alpha is not supported (glTF textures have straight "
+            "alpha)");
     const int channels = alpha ? 4 : 3;
     TextureImage img(int(info.width), int(info.height), channels, TexelFormat::U8, info.srgb,
                      mipmaps);
     const int levels = std::min(int(info.levels.size()), img.levels());
     std::unique_ptr<BasisLzDecoder> basis;
     if (info.codec == BasisCodec::Etc1s)
-        basis = std::make_unique<BasisLzDecoder>(bytes.data() + info.sgd_offset,
-                                                 size_t(info.sgd_length),
-                                                 uint32_t(info.levels.size()));
+        basis = std::make_unique<BasisLzDecoder>(
+            bytes.data() + info.sgd_offset, size_t(info.sgd_length), uint32_t(info.levels.size()));
     std::vector<uint8_t> rgba;
     for (int l = 0; l < levels; ++l) {
         const Ktx2Level& level = info.levels[size_t(l)];

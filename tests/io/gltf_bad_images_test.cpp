@@ -159,7 +159,8 @@ TEST(GltfBadImages, BasisuFallsBackOrFailsNamingTheImage) {
             test::one_mesh_scene(R"({"attributes": {"POSITION": 0}, "material": 0})");
         return load_gltf(b.write(dir, "basisu.gltf", members, BufferStorage::DataUri));
     };
-    const std::string both = R"({"source": 0, "extensions": {"KHR_texture_basisu": {"source": 1}}})";
+    const std::string both =
+        R"({"source": 0, "extensions": {"KHR_texture_basisu": {"source": 1}}})";
     testing::internal::CaptureStderr();
     const Scene s = load(both);
     const std::string log = testing::internal::GetCapturedStderr();
@@ -181,7 +182,8 @@ TEST(GltfBadImages, BasisuFallsBackOrFailsNamingTheImage) {
                       dir.file("basisu.gltf") +
                           ": images[1] ('t.ktx2'): cannot decode KTX2 image: KTX2: truncated "
                           "KTX2 header" +
-                          (required ? " (KHR_texture_basisu is required)" : " (no fallback source)"));
+                          (required ? " (KHR_texture_basisu is required)"
+                                    : " (no fallback source)"));
         }
     }
 }

@@ -23,8 +23,8 @@ TEST(DataUri, DecodesBase64WithAndWithoutPadding) {
 TEST(DataUri, RefusesWhatIsNotBase64Data) {
     std::vector<uint8_t> out;
     EXPECT_FALSE(decode_data_uri("t.ktx2", &out));
-    EXPECT_FALSE(decode_data_uri("data:image/ktx2,raw", &out));      // not base64
-    EXPECT_FALSE(decode_data_uri("data:image/ktx2;base64", &out));   // no comma
+    EXPECT_FALSE(decode_data_uri("data:image/ktx2,raw", &out));     // not base64
+    EXPECT_FALSE(decode_data_uri("data:image/ktx2;base64", &out));  // no comma
     EXPECT_FALSE(decode_data_uri("data:image/ktx2;base64,TW!u", &out));
     EXPECT_FALSE(decode_data_uri("data:image/ktx2;base64,TWFuT", &out));  // a lone sextet
     EXPECT_FALSE(decode_data_uri("data:image/ktx2;base64,TQ=", &out));    // bad padding

@@ -50,8 +50,9 @@ TEST(Ktx2Corrupt, UnsupportedHeaderFields) {
     const std::vector<uint8_t> good = test::read_ktx2("alpha_simple_basis");
     std::vector<uint8_t> b = good;
     put32(b, 12, 37);  // VK_FORMAT_R8G8B8A8_UNORM
-    EXPECT_EQ(failure(b), "KTX2: vkFormat 37 is not supported: only Basis Universal (ETC1S, "
-                          "UASTC) KTX2 files are decoded");
+    EXPECT_EQ(failure(b),
+              "KTX2: vkFormat 37 is not supported: only Basis Universal (ETC1S, "
+              "UASTC) KTX2 files are decoded");
     b = good;
     put32(b, 28, 4);
     EXPECT_EQ(failure(b), "KTX2: 3D textures are not supported (KHR_texture_basisu is 2D)");
@@ -63,8 +64,9 @@ TEST(Ktx2Corrupt, UnsupportedHeaderFields) {
     EXPECT_EQ(failure(b), "KTX2: levelCount 5 is more than the 4 levels of a 8x8 texture");
     b = good;
     b[get32(b, 48) + 4 + 11] |= 1;  // DFD flags: KHR_DF_FLAG_ALPHA_PREMULTIPLIED
-    EXPECT_EQ(failure(b), "KTX2: premultiplied alpha is not supported (glTF textures have "
-                          "straight alpha)");
+    EXPECT_EQ(failure(b),
+              "KTX2: premultiplied alpha is not supported (glTF textures have "
+              "straight alpha)");
     b = good;
     b[get32(b, 48) + 4 + 10] = 13;  // DFD transfer function: PQ
     EXPECT_EQ(failure(b), "KTX2: DFD transfer function 13 is neither linear (1) nor sRGB (2)");
@@ -74,8 +76,9 @@ TEST(Ktx2Corrupt, OversizeDimensionsAreRefusedBeforeAllocating) {
     std::vector<uint8_t> b = test::read_ktx2("color_grid_basis");
     put32(b, 20, 1u << 20);
     put32(b, 24, 1u << 20);
-    EXPECT_EQ(failure(b), "KTX2: 1048576x1048576 is more than the limit of 268435456 pixels "
-                          "(--max-texture-pixels)");
+    EXPECT_EQ(failure(b),
+              "KTX2: 1048576x1048576 is more than the limit of 268435456 pixels "
+              "(--max-texture-pixels)");
     EXPECT_EQ(failure(test::read_ktx2("cyan_rgb_reference_uastc"), 1000),
               "KTX2: 64x64 is more than the limit of 1000 pixels (--max-texture-pixels)");
 }
@@ -103,14 +106,12 @@ TEST(Ktx2Corrupt, RangesOutsideTheFile) {
 // headers, indexes, codebooks, slices and Zstandard frames.
 TEST(Ktx2Corrupt, TruncatedFilesFail) {
     for (const char* name : {"alpha_simple_basis", "valid_R8G8B8A8_UNORM_2D_UASTC_ZSTD_9",
-                             "rg_reference_uastc", "ktx_document_basis",
-                             "color_grid_uastc_zstd"}) {
+                             "rg_reference_uastc", "ktx_document_basis", "color_grid_uastc_zstd"}) {
         SCOPED_TRACE(name);
         const std::vector<uint8_t> good = test::read_ktx2(name);
         const size_t step = good.size() < 2000 ? 1 : good.size() / 300;
         for (size_t n = 0; n < good.size(); n += step)
-            EXPECT_NE(failure(std::vector<uint8_t>(good.begin(), good.begin() + long(n))), "")
-                << n;
+            EXPECT_NE(failure(std::vector<uint8_t>(good.begin(), good.begin() + long(n))), "") << n;
     }
 }
 

@@ -106,8 +106,8 @@ TEST(Ktx2Decoder, MipLevelsComeFromTheFile) {
     const TextureImage img =
         decode_ktx2(test::read_ktx2("rgba-mipmap-reference-basis"), "mips", kLimit);
     ASSERT_EQ(img.levels(), 7);
-    const int expected[7][3] = {{255, 0, 0},   {255, 128, 0}, {255, 255, 0}, {0, 255, 0},
-                                {0, 0, 255},   {0, 255, 255}, {255, 0, 255}};
+    const int expected[7][3] = {{255, 0, 0}, {255, 128, 0}, {255, 255, 0}, {0, 255, 0},
+                                {0, 0, 255}, {0, 255, 255}, {255, 0, 255}};
     for (int l = 0; l < 7; ++l)
         for (int c = 0; c < 3; ++c) {
             SCOPED_TRACE("level " + std::to_string(l) + " channel " + std::to_string(c));
@@ -178,8 +178,8 @@ TEST(Ktx2Decoder, ChartIsUpright) {
     const auto red_minus_blue = [&](int x, int y) {
         return int(grid.code(0, x, y, 0)) - int(grid.code(0, x, y, 2));
     };
-    EXPECT_GT(red_minus_blue(8, 8), 80);      // H1's corner
-    EXPECT_GT(red_minus_blue(8, 1015), 0);    // A1's corner
+    EXPECT_GT(red_minus_blue(8, 8), 80);    // H1's corner
+    EXPECT_GT(red_minus_blue(8, 1015), 0);  // A1's corner
     EXPECT_LT(red_minus_blue(8, 1015), 40);
 }
 
