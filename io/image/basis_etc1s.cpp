@@ -59,9 +59,9 @@ BasisLzDecoder::BasisLzDecoder(const uint8_t* sgd, size_t sgd_size, uint32_t ima
                    ext_len = u32(sgd + 16);
     const uint64_t need =
         kHeader + kDesc * uint64_t(image_count) + ep_len + sel_len + tab_len + ext_len;
-    if (need != sgd_size)
-        throw Ktx2Error("BasisLZ global data is " + std::to_string(sgd_size) +
-                        " bytes, its lengths add up to " + std::to_string(need));
+    if (need > sgd_size)
+        throw Ktx2Error("BasisLZ global data's lengths add up to " + std::to_string(need) +
+                        " bytes, more than its " + std::to_string(sgd_size));
     if (endpoint_count == 0 || selector_count == 0)
         throw Ktx2Error("BasisLZ global data has an empty codebook");
     const uint8_t* p = sgd + kHeader;
@@ -225,7 +225,7 @@ void BasisLzDecoder::decode_slice(const uint8_t* data, size_t size, uint32_t blo
 }
 
 void BasisLzDecoder::decode(uint32_t image, const uint8_t* level, size_t level_size, uint32_t width,
-                            uint32_t height, bool alpha, uint8_t* rgba) const {
+                            uint32_t height, int second, uint8_t* rgba) const {
     if (image >= m_images.size()) throw Ktx2Error("no BasisLZ image descriptor");
     const ImageDesc& d = m_images[image];
     if (d.flags & 2) throw Ktx2Error("BasisLZ P-frames (video) are not supported");
@@ -234,7 +234,7 @@ void BasisLzDecoder::decode(uint32_t image, const uint8_t* level, size_t level_s
             throw Ktx2Error(std::string("BasisLZ ") + what + " slice lies outside its level");
     };
     check(d.rgb_offset, d.rgb_length, "RGB");
-    if (alpha) check(d.alpha_offset, d.alpha_length, "alpha");
+    if (second >= 0) check(d.alpha_offset, d.alpha_length, "second");
     const uint32_t bw = (width + 3) / 4, bh = (height + 3) / 4;
     auto pixels = [&](bool alpha_slice) {
         return [&, alpha_slice](uint32_t bx, uint32_t by, uint32_t e, uint32_t s) {
@@ -245,7 +245,7 @@ void BasisLzDecoder::decode(uint32_t image, const uint8_t* level, size_t level_s
                     const uint32_t i = (sel[y] >> (2 * x)) & 3;
                     uint8_t* px = rgba + (size_t(by * 4 + y) * width + bx * 4 + x) * 4;
                     if (alpha_slice) {
-                        px[3] = colors[i * 3 + 1];  // the slice is grey: its green is alpha
+                        px[second] = colors[i * 3 + 1];  // the slice is grey: take green
                     } else {
                         px[0] = colors[i * 3];
                         px[1] = colors[i * 3 + 1];
@@ -256,7 +256,7 @@ void BasisLzDecoder::decode(uint32_t image, const uint8_t* level, size_t level_s
         };
     };
     decode_slice(level + d.rgb_offset, d.rgb_length, bw, bh, pixels(false));
-    if (alpha) decode_slice(level + d.alpha_offset, d.alpha_length, bw, bh, pixels(true));
+    if (second >= 0) decode_slice(level + d.alpha_offset, d.alpha_length, bw, bh, pixels(true));
 }
 
 }  // namespace penumbra

@@ -22,10 +22,11 @@ public:
     BasisLzDecoder(const uint8_t* sgd, size_t sgd_size, uint32_t image_count);
 
     // Decodes image `image` from its level's bytes into `rgba` (width x height x 4,
-    // rows top to bottom as stored): the RGB slice, and with `alpha` the alpha slice into
-    // A (else A = 255). Throws Ktx2Error on a corrupt slice.
+    // rows top to bottom as stored): the RGB slice, and the second slice (alpha, or green
+    // in two-channel files) into channel `second` unless it is -1 (A = 255 otherwise).
+    // Throws Ktx2Error on a corrupt slice.
     void decode(uint32_t image, const uint8_t* level, size_t level_size, uint32_t width,
-                uint32_t height, bool alpha, uint8_t* rgba) const;
+                uint32_t height, int second, uint8_t* rgba) const;
 
 private:
     struct ImageDesc {

@@ -16,8 +16,9 @@ constexpr size_t kHeaderSize = 80, kLevelEntrySize = 24;
 // KHR_DF colour models of the Basis Universal payloads, and the transfer functions.
 constexpr uint32_t kModelEtc1s = 163, kModelUastc = 166;
 constexpr uint32_t kTransferLinear = 1, kTransferSrgb = 2;
-// Channel ids: ETC1S's alpha slice (AAA); UASTC's RGBA and RRRG (colour and alpha).
-constexpr uint32_t kEtc1sAlpha = 15, kUastcRgba = 3, kUastcRrrg = 5;
+// Channel ids: ETC1S's second slice (AAA, or GGG in two-channel files); UASTC's RGBA and
+// RRRG (colour and alpha).
+constexpr uint32_t kEtc1sAlpha = 15, kEtc1sGreen = 4, kUastcRgba = 3, kUastcRrrg = 5;
 
 uint32_t u32(const uint8_t* p) {
     return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
@@ -70,13 +71,16 @@ void read_dfd(const uint8_t* data, size_t size, uint32_t offset, uint32_t length
                         (info.codec == BasisCodec::Etc1s ? "ETC1S has 1 or 2" : "UASTC has 1"));
     for (uint32_t s = 0; s < samples; ++s) {
         const uint32_t channel = (u32(b + 24 + 16 * s) >> 24) & 0xF;
-        if (info.codec == BasisCodec::Etc1s && s == 1 && channel == kEtc1sAlpha)
-            info.has_alpha = true;
+        if (info.codec == BasisCodec::Etc1s && s == 1) {
+            if (channel != kEtc1sAlpha && channel != kEtc1sGreen)
+                throw Ktx2Error("ETC1S DFD's second sample is channel " + str(channel) +
+                                ", not AAA (15) or GGG (4)");
+            info.etc1s_second_slice = channel == kEtc1sAlpha ? 3 : 1;
+            info.has_alpha = channel == kEtc1sAlpha;
+        }
         if (info.codec == BasisCodec::Uastc && (channel == kUastcRgba || channel == kUastcRrrg))
             info.has_alpha = true;
     }
-    if (info.codec == BasisCodec::Etc1s && samples == 2 && !info.has_alpha)
-        throw Ktx2Error("ETC1S DFD's second sample is not the alpha slice (AAA)");
 }
 
 // The key/value data: KTXorientation and KTXswizzle are read; other keys are skipped.

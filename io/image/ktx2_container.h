@@ -23,9 +23,12 @@ struct Ktx2Info {
     uint32_t width = 0, height = 0;
     BasisCodec codec = BasisCodec::Etc1s;
     Supercompression scheme = Supercompression::None;
-    bool srgb = false;             // DFD transfer function: sRGB (else linear)
-    bool premultiplied = false;    // DFD flag KHR_DF_FLAG_ALPHA_PREMULTIPLIED
-    bool has_alpha = false;        // ETC1S: an alpha slice; UASTC: RGBA or RRRG channels
+    bool srgb = false;           // DFD transfer function: sRGB (else linear)
+    bool premultiplied = false;  // DFD flag KHR_DF_FLAG_ALPHA_PREMULTIPLIED
+    bool has_alpha = false;      // ETC1S: an alpha slice; UASTC: RGBA or RRRG channels
+    // ETC1S: the channel a second slice holds (DFD sample AAA: 3, alpha; GGG: 1, green in
+    // two-channel files), or -1 for an RGB slice alone.
+    int etc1s_second_slice = -1;
     bool bottom_up = false;        // KTXorientation "ru": the first row is the bottom one
     std::string swizzle = "rgba";  // KTXswizzle, or the identity
     uint64_t sgd_offset = 0, sgd_length = 0;

@@ -88,7 +88,7 @@ TextureImage decode(const std::vector<uint8_t>& bytes, uint64_t max_pixels, bool
         rgba.assign(size_t(level.width) * level.height * 4, 0);
         if (basis)
             basis->decode(uint32_t(l), bytes.data() + level.offset, size_t(level.length),
-                          level.width, level.height, info.has_alpha, rgba.data());
+                          level.width, level.height, info.etc1s_second_slice, rgba.data());
         else
             decode_uastc_level(uastc_blocks(bytes.data(), info, level), level.width, level.height,
                                rgba.data());

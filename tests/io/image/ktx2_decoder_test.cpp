@@ -142,6 +142,20 @@ TEST(Ktx2Decoder, AlphaOfBothKinds) {
     EXPECT_EQ(doc.code(0, 512, 700, 3), 255u);  // opaque on it
 }
 
+// Two-channel ETC1S files carry RRR and GGG slices: the second slice is green, not
+// alpha. alpha_simple's DFD relabelled so: its second slice (128) becomes green.
+TEST(Ktx2Decoder, Etc1sSecondSliceAsGreen) {
+    std::vector<uint8_t> b = test::read_ktx2("alpha_simple_basis");
+    const uint32_t dfd = uint32_t(b[48]) | uint32_t(b[49]) << 8;
+    uint8_t& channel = b[dfd + 4 + 24 + 16 + 3];  // sample 1's channelType (low 4 bits)
+    ASSERT_EQ(channel & 0xF, 15);                 // AAA
+    channel = uint8_t((channel & 0xF0) | 4);      // GGG
+    const TextureImage img = decode_ktx2(b, "gg", kLimit);
+    ASSERT_EQ(img.channels(), 3);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) EXPECT_NEAR(int(img.code(0, x, y, 1)), 128, 2);
+}
+
 double psnr(const TextureImage& a, const TextureImage& b, int channels) {
     double se = 0;
     for (int y = 0; y < a.height(); ++y)
