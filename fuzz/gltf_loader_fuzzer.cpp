@@ -8,6 +8,7 @@
 // stops on the abort. Textures are held to 2^16 pixels (a larger one is refused from its
 // header, as --max-texture-pixels would): real seeds carry megapixel images whose decoding
 // and pyramids would otherwise take most of each run, away from the loader's own code.
+#include <tbb/global_control.h>
 #include <unistd.h>
 
 #include <cstddef>
@@ -43,6 +44,9 @@ const std::string& input_path() {
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
     // Warnings about the (mostly broken) inputs would dominate the run time.
     penumbra::set_log_level(penumbra::LogLevel::Silent);
+    // One thread: TBB's hand-offs between workers cost more than the small inputs' work,
+    // and libFuzzer's coverage is then that of the input alone.
+    static tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
     return 0;
 }
 
