@@ -4,6 +4,8 @@
 // image in a data: URI (which tinygltf does not decode) loads without warnings.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "io/gltf_loader.h"
 #include "support/gltf_builder.h"
 #include "support/paths.h"
@@ -26,6 +28,27 @@ TEST(Ktx2Gltf, TextureVariantsEmbeddedKtxLoads) {
         ASSERT_TRUE(m.base_color_texture.valid());
         EXPECT_EQ(s.textures.at(size_t(m.base_color_texture.texture)).image, 0u);
     }
+}
+
+// The same texture as an external file next to the glTF, the extension optional (used).
+TEST(Ktx2Gltf, ExternalFileImageLoads) {
+    test::ScratchDir dir;
+    const std::vector<uint8_t> ktx2 = test::read_ktx2("luminance_alpha_reference_basis");
+    std::ofstream(dir.file("la.ktx2"), std::ios::binary)
+        .write(reinterpret_cast<const char*>(ktx2.data()), std::streamsize(ktx2.size()));
+    test::GltfBuilder b;
+    b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
+    const std::string members =
+        R"("extensionsUsed": ["KHR_texture_basisu"],
+        "images": [{"uri": "la.ktx2", "mimeType": "image/ktx2"}],
+        "textures": [{"extensions": {"KHR_texture_basisu": {"source": 0}}}],
+        "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],)" +
+        test::one_mesh_scene(R"({"attributes": {"POSITION": 0}, "material": 0})");
+    const Scene s = load_gltf(b.write(dir, "file.gltf", members, test::BufferStorage::DataUri));
+    ASSERT_EQ(s.images.size(), 1u);
+    EXPECT_EQ(s.images[0].width(), 32);
+    EXPECT_EQ(s.images[0].channels(), 4);
+    EXPECT_FALSE(s.images[0].srgb());  // the file's DFD says linear
 }
 
 TEST(Ktx2Gltf, DataUriImageLoadsWithoutWarnings) {
