@@ -111,7 +111,8 @@ void read_kvd(const uint8_t* data, size_t size, uint32_t offset, uint32_t length
                 throw Ktx2Error("KTXswizzle '" + value + "' is not four of r, g, b, a, 0, 1");
             info.swizzle = value;
         }
-        pos += (n + 3) & ~3u;  // entries are padded to 4 bytes
+        // Entries are padded to 4 bytes; in 64 bits, so that a huge n cannot wrap.
+        pos = uint32_t(std::min<uint64_t>(length, (uint64_t(pos) + n + 3) & ~uint64_t(3)));
     }
 }
 
