@@ -5,9 +5,9 @@
 #   scripts/fuzz.sh all      every target in turn, FUZZ_SECONDS each
 # Builds the target in the asan preset's build (build/asan, or BUILD_DIR) and seeds a
 # temporary corpus. glTF: from scenes/ and, in ../shared, the Khronos samples, the real
-# files of scenes/wild/ and the fuzzer's earlier finds in scenes/fuzz-found/ (copied, at
-# most FUZZ_MAX_SEED_BYTES each, default 256 KiB, also the longest input a mutation may
-# make; the originals are not touched). KTX2: the files of ../shared/scenes/ktx2. A crash
+# files of scenes/wild/, the KHR_texture_basisu scene of scenes/ktx2/ and the fuzzer's
+# earlier finds in scenes/fuzz-found/ (copied, at most FUZZ_MAX_SEED_BYTES each, default
+# 256 KiB, also the longest input a mutation may make; the originals are not touched). KTX2: the files of ../shared/scenes/ktx2. A crash
 # fails the script and leaves its input in FUZZ_ARTIFACTS (default build/fuzz-artifacts);
 # fix it and add the input to scenes/invalid/ with its expected message.
 set -euo pipefail
@@ -48,7 +48,7 @@ run_target() {
     corpus="$(mktemp -d)"
     if [ "$name" = gltf ]; then
         local seed_dirs=(scenes)
-        for d in khronos wild fuzz-found; do
+        for d in khronos wild fuzz-found ktx2; do
             if [ -d "$shared/scenes/$d" ]; then seed_dirs+=("$shared/scenes/$d"); fi
         done
         python3 fuzz/make_seeds.py "$corpus" "${seed_dirs[@]}" --max-bytes "$max_bytes"
