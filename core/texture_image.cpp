@@ -178,6 +178,18 @@ void* TextureImage::level0_data() {
     }
 }
 
+void* TextureImage::level_data(int level) {
+    const size_t first = m_levels[size_t(level)].offset;
+    switch (m_format) {
+        case TexelFormat::U8:
+            return m_u8.data() + first;
+        case TexelFormat::U16:
+            return m_u16.data() + first;
+        default:
+            return m_f32.data() + first;
+    }
+}
+
 float TextureImage::linear(size_t i, int c) const {
     // Alpha is linear in every encoding (glTF 2.0, section 3.9.2).
     const bool colour = m_srgb && !((m_channels == 2 && c == 1) || (m_channels == 4 && c == 3));
@@ -235,8 +247,8 @@ void TextureImage::downsample(int level) {
     });
 }
 
-void TextureImage::build_mips() {
-    for (int level = 1; level < levels(); ++level) downsample(level);
+void TextureImage::build_mips(int first_level) {
+    for (int level = std::max(1, first_level); level < levels(); ++level) downsample(level);
 }
 
 Vec4 TextureImage::texel_u8(size_t i) const {

@@ -30,10 +30,13 @@ public:
     explicit TextureImage(const Image& image, bool mipmaps = true);
 
     void* level0_data();
-    // Each level from the one before: the box filter over each output texel's exact area
-    // in the finer level (fractional weights at odd sizes), averaged in linear space and
-    // re-encoded to the nearest code. Parallel over rows (TBB).
-    void build_mips();
+    // A level's storage (row-major, channels interleaved), for decoders whose files carry
+    // their own pyramid (KTX2); build_mips(first) then fills only the levels they lack.
+    void* level_data(int level);
+    // Each level from first_level on from the one before: the box filter over each output
+    // texel's exact area in the finer level (fractional weights at odd sizes), averaged in
+    // linear space and re-encoded to the nearest code. Parallel over rows (TBB).
+    void build_mips(int first_level = 1);
 
     int width(int level = 0) const { return m_levels[size_t(level)].width; }
     int height(int level = 0) const { return m_levels[size_t(level)].height; }

@@ -11,6 +11,7 @@ packages=(
     libopenimageio-dev openimageio-tools libopencolorio-dev
     libtinygltf-dev nlohmann-json3-dev libstb-dev
     libdraco-dev libmeshoptimizer-dev
+    libzstd-dev
     libcli11-dev
 )
 if [ "${1:-}" = "--test" ]; then

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Set up, build and run every test (GoogleTest through CTest), then the same tests under
-# ASan+UBSan and a bounded fuzzing run of the glTF loader (scripts/sanitize.sh,
-# scripts/fuzz.sh). PENUMBRA_SANITIZE=0 skips the last two (a quicker local run).
+# ASan+UBSan and a bounded fuzzing run of each fuzz target, the glTF loader and the KTX2
+# decoder (scripts/sanitize.sh, scripts/fuzz.sh all). PENUMBRA_SANITIZE=0 skips the last
+# two (a quicker local run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh --test
@@ -9,5 +10,5 @@ scripts/build.sh
 ctest --test-dir build --output-on-failure --parallel "$(nproc)" "$@"
 if [ "${PENUMBRA_SANITIZE:-1}" != 0 ]; then
     scripts/sanitize.sh
-    scripts/fuzz.sh
+    scripts/fuzz.sh all
 fi

@@ -37,6 +37,7 @@ const char* const kSupportedExtensions[] = {
     "KHR_materials_volume",
     "KHR_mesh_quantization",
     "KHR_meshopt_compression",
+    "KHR_texture_basisu",
     "KHR_texture_transform",
     "EXT_cameras_sensor",
     "EXT_mesh_gpu_instancing",
@@ -118,6 +119,31 @@ void log_lines(const std::string& file, const std::string& text, bool strict) {
     }
 }
 
+// tinygltf takes a data: URI of a MIME type it does not know (image/ktx2, image/webp) for
+// a file name and warns that the file is missing; the texture table decodes such URIs
+// itself (io/image/data_uri.h), so those warnings are dropped.
+void drop_data_uri_warnings(const tinygltf::Model& model, std::string& warn) {
+    std::vector<std::string> drop;
+    for (size_t i = 0; i < model.images.size(); ++i)
+        if (model.images[i].image.empty() && model.images[i].uri.compare(0, 5, "data:") == 0)
+            drop.push_back("Failed to load external 'uri' for image[" + std::to_string(i) +
+                           "] name = [" + model.images[i].name + "]");
+    if (drop.empty()) return;
+    std::string kept;
+    size_t start = 0;
+    while (start < warn.size()) {
+        size_t end = warn.find('\n', start);
+        if (end == std::string::npos) end = warn.size();
+        const std::string line = warn.substr(start, end - start);
+        start = end + 1;
+        if (line.compare(0, 22, "File not found : data:") == 0 ||
+            std::find(drop.begin(), drop.end(), line) != drop.end())
+            continue;
+        kept += line + "\n";
+    }
+    warn = kept;
+}
+
 }  // namespace
 
 tinygltf::Model parse_gltf(const std::string& path, bool strict) {
@@ -157,6 +183,7 @@ tinygltf::Model parse_gltf(const std::string& path, bool strict) {
         // tinygltf throws on some malformed input (e.g. an empty data: URI).
         throw SceneError(path + ": " + one_line(e.what()));
     }
+    drop_data_uri_warnings(model, warn);
     log_lines(path, warn, strict);
     // tinygltf reads extensionsRequired before buffers and accessors, which an unknown
     // extension may leave without data; name the extension, not the accessor it broke.

@@ -15,6 +15,8 @@
 #include "core/error.h"
 #include "io/color/color.h"
 #include "io/image/image_header.h"
+#include "io/image/ktx2_container.h"
+#include "io/image/ktx2_decoder.h"
 
 namespace penumbra {
 
@@ -159,6 +161,9 @@ TextureImage decode_texture_image(const std::vector<uint8_t>& bytes, const std::
                                   ImageEncoding encoding, const TextureDecodeLimits& limits,
                                   bool mipmaps) {
     if (bytes.empty()) throw ImageDecodeError(name, "no data");
+    // KTX2 only under KHR_texture_basisu; elsewhere it is refused as any other format.
+    if (limits.allow_ktx2 && is_ktx2(bytes.data(), bytes.size()))
+        return decode_ktx2(bytes, name, limits.max_pixels, mipmaps);
     const ImageHeader h = read_image_header(bytes, limits.allow_webp);
     // The size first: a header claiming too much is refused for that, whatever follows.
     if (h.format != ImageFormat::Unknown && uint64_t(h.width) * h.height > limits.max_pixels)

@@ -31,10 +31,12 @@ private:
     std::string m_why;
 };
 
-// What a glTF image may be: PNG or JPEG, WebP only where EXT_texture_webp allows it, and
+// What a glTF image may be: PNG or JPEG, WebP only where EXT_texture_webp allows it, KTX2
+// (Basis Universal, io/image/ktx2_decoder.h) only where KHR_texture_basisu does, and
 // at most max_pixels pixels as its header claims.
 struct TextureDecodeLimits {
     bool allow_webp = false;
+    bool allow_ktx2 = false;  // KHR_texture_basisu is used: KTX2 images are glTF images
     uint64_t max_pixels = kDefaultMaxTexturePixels;
 };
 

@@ -2,6 +2,7 @@
 
 #include "io/gltf/gltf_accessor.h"
 #include "io/gltf/material/gltf_material_json.h"
+#include "io/image/data_uri.h"
 #include "io/image/image_reader.h"
 
 namespace penumbra {
@@ -19,8 +20,12 @@ const tinygltf::Value& texture_transform(const tinygltf::ExtensionMap& extension
 
 TextureTable::TextureTable(const GltfContext& ctx, Scene& scene, ImagePrefetch* prefetch)
     : m_ctx(ctx), m_scene(scene), m_prefetch(prefetch) {
-    for (const std::string& name : ctx.model.extensionsUsed)
+    for (const std::string& name : ctx.model.extensionsUsed) {
         if (name == "EXT_texture_webp") m_allow_webp = true;
+        if (name == "KHR_texture_basisu") m_allow_ktx2 = true;
+    }
+    for (const std::string& name : ctx.model.extensionsRequired)
+        if (name == "KHR_texture_basisu") m_ktx2_required = true;
     // An image gets a pyramid unless every texture using it samples without mipmaps
     // (minFilter NEAREST or LINEAR); indices are checked where they are used.
     for (const tinygltf::Texture& gt : ctx.model.textures) {
@@ -32,9 +37,11 @@ TextureTable::TextureTable(const GltfContext& ctx, Scene& scene, ImagePrefetch* 
             min_filter == TINYGLTF_TEXTURE_FILTER_LINEAR)
             continue;
         m_mipmapped.insert(gt.source);
-        const tinygltf::Value& webp = extension_object(gt.extensions, "EXT_texture_webp");
-        if (webp.IsObject() && webp.Has("source") && webp.Get("source").IsInt())
-            m_mipmapped.insert(webp.Get("source").GetNumberAsInt());
+        for (const char* ext : {"EXT_texture_webp", "KHR_texture_basisu"}) {
+            const tinygltf::Value& v = extension_object(gt.extensions, ext);
+            if (v.IsObject() && v.Has("source") && v.Get("source").IsInt())
+                m_mipmapped.insert(v.Get("source").GetNumberAsInt());
+        }
     }
 }
 
@@ -130,7 +137,9 @@ int TextureTable::texture_index(int index, ImageEncoding encoding) {
         tex.nearest = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
         set_min_filter(s.minFilter, tex);
     }
-    const int image = image_index(image_source(gt, el), encoding);
+    const int ktx2 = basisu_source(gt, el);
+    const int image = ktx2 >= 0 ? basisu_image(gt, el, ktx2, encoding)
+                                : image_index(image_source(gt, el), encoding);
     if (image < 0) {  // undecodable: the texture is absent
         m_textures.emplace(key, -1);
         return -1;
@@ -142,10 +151,44 @@ int TextureTable::texture_index(int index, ImageEncoding encoding) {
     return result;
 }
 
+// KHR_texture_basisu: the KTX2 image a texture names (io/image/ktx2_decoder.h), or -1.
+int TextureTable::basisu_source(const tinygltf::Texture& gt, const std::string& el) const {
+    const tinygltf::Value& ext = extension_object(gt.extensions, "KHR_texture_basisu");
+    if (!ext.IsObject()) return -1;
+    const std::string kel = el + ".extensions.KHR_texture_basisu";
+    if (!ext.Has("source") || !ext.Get("source").IsInt())
+        m_ctx.fail(kel, "source must be an integer image index");
+    const int source = ext.Get("source").GetNumberAsInt();
+    m_ctx.check_index(kel, "source", source, m_ctx.model.images.size(), "images");
+    return source;
+}
+
+// A KTX2 image that cannot be decoded is an error naming it where the extension is
+// required or the texture has no other source; otherwise one warning, and the core
+// `source` (PNG or JPEG) that the extension asks files to provide is used instead.
+int TextureTable::basisu_image(const tinygltf::Texture& gt, const std::string& el, int ktx2,
+                               ImageEncoding encoding) {
+    std::string why;
+    const int image = image_index(ktx2, encoding, &why);
+    if (image >= 0 || why.empty()) return image;
+    const tinygltf::Image& gi = m_ctx.model.images[size_t(ktx2)];
+    const bool external = !gi.uri.empty() && gi.uri.compare(0, 5, "data:") != 0;
+    const std::string label = external ? gi.uri : gi.name;
+    const std::string iel =
+        element("images", size_t(ktx2)) + (label.empty() ? "" : " ('" + label + "')");
+    if (m_ktx2_required || gt.source == -1)
+        m_ctx.fail(iel, "cannot decode KTX2 image: " + why +
+                            (m_ktx2_required ? " (KHR_texture_basisu is required)"
+                                             : " (no fallback source)"));
+    if (m_ktx2_warned.insert(ktx2).second)
+        m_ctx.warn(iel, "cannot decode KTX2 image: " + why + "; using the fallback source images[" +
+                            std::to_string(gt.source) + "]");
+    return image_index(image_source(gt, el), encoding);
+}
+
 // EXT_texture_webp: the WebP image when the texture names one (OIIO decodes WebP); the
-// core `source` is then only the fallback for viewers without WebP. KHR_texture_basisu
-// (KTX2) is not read (Debian 12 packages no Basis Universal transcoder), so its texture
-// uses the core `source`, the fallback the extension allows, and is an error without one.
+// core `source` is then only the fallback for viewers without WebP. Textures with a
+// KHR_texture_basisu (KTX2) image come here only for their fallback.
 int TextureTable::image_source(const tinygltf::Texture& gt, const std::string& el) const {
     const tinygltf::Value& webp = extension_object(gt.extensions, "EXT_texture_webp");
     if (webp.IsObject()) {
@@ -156,21 +199,18 @@ int TextureTable::image_source(const tinygltf::Texture& gt, const std::string& e
         m_ctx.check_index(wel, "source", source, m_ctx.model.images.size(), "images");
         return source;
     }
-    if (gt.source == -1) {
-        if (gt.extensions.count("KHR_texture_basisu"))
-            m_ctx.fail(el,
-                       "has only a KHR_texture_basisu (KTX2) source and no fallback source "
-                       "image; KTX2 cannot be decoded (no Basis Universal decoder)");
-        m_ctx.fail(el, "has no source image");
-    }
+    if (gt.source == -1) m_ctx.fail(el, "has no source image");
     m_ctx.check_index(el, "source", gt.source, m_ctx.model.images.size(), "images");
     return gt.source;
 }
 
-int TextureTable::image_index(int index, ImageEncoding encoding) {
+int TextureTable::image_index(int index, ImageEncoding encoding, std::string* error) {
     const auto key = std::make_pair(index, int(encoding));
     if (auto it = m_images.find(key); it != m_images.end()) return it->second;
-    if (m_undecodable.count(index)) return -1;
+    if (auto it = m_undecodable.find(index); it != m_undecodable.end()) {
+        if (error) *error = it->second;
+        return -1;
+    }
     const tinygltf::Image& gi = m_ctx.model.images[size_t(index)];
     const std::string el = element("images", size_t(index));
     const bool external = !gi.uri.empty() && gi.uri.compare(0, 5, "data:") != 0;
@@ -180,12 +220,17 @@ int TextureTable::image_index(int index, ImageEncoding encoding) {
         bytes = &(view = buffer_view_bytes(m_ctx, el, gi.bufferView));
     else if (gi.image.empty() && external)
         m_ctx.fail(el, "cannot read image file '" + gi.uri + "'");
-    else if (gi.image.empty())
+    else if (gi.image.empty() && gi.uri.empty())
         m_ctx.fail(el, "has no image data");
+    else if (gi.image.empty() && !decode_data_uri(gi.uri, &view))  // a MIME type tinygltf skips
+        m_ctx.fail(el, "data: URI is not base64 data");
+    else if (gi.image.empty())
+        bytes = &view;
     const std::string label = external ? gi.uri : gi.name;
     const std::string named = label.empty() ? el : el + " ('" + label + "')";
     TextureDecodeLimits limits;
     limits.allow_webp = m_allow_webp;
+    limits.allow_ktx2 = m_allow_ktx2;
     limits.max_pixels = m_ctx.max_texture_pixels;
     TextureImage img;
     try {
@@ -201,7 +246,11 @@ int TextureTable::image_index(int index, ImageEncoding encoding) {
     } catch (const ImageDecodeError& e) {
         // Renderable without it: the textures using it are left out, so their materials
         // use their factors alone; one warning per image, whichever encodings use it.
-        m_undecodable.insert(index);
+        m_undecodable[index] = e.why();
+        if (error) {
+            *error = e.why();
+            return -1;
+        }
         m_ctx.warn(named,
                    "cannot decode image: " + e.why() + "; the textures using it are ignored");
         return -1;

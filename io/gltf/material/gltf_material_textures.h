@@ -4,6 +4,7 @@
 #pragma once
 
 #include <map>
+#include <string>
 #include <set>
 #include <utility>
 
@@ -34,15 +35,23 @@ public:
 private:
     int texture_index(int index, ImageEncoding encoding);
     int image_source(const tinygltf::Texture& gt, const std::string& el) const;
-    int image_index(int index, ImageEncoding encoding);
+    int basisu_source(const tinygltf::Texture& gt, const std::string& el) const;
+    int basisu_image(const tinygltf::Texture& gt, const std::string& el, int ktx2,
+                     ImageEncoding encoding);
+    // The Scene image of glTF image `index`; -1 when it cannot be decoded, with one
+    // warning, or with the reason in *error (no warning) when error is given.
+    int image_index(int index, ImageEncoding encoding, std::string* error = nullptr);
     static void set_min_filter(int filter, Texture& tex);
     WrapMode wrap_mode(const std::string& el, const char* what, int mode) const;
 
     const GltfContext& m_ctx;
     Scene& m_scene;
     bool m_allow_webp = false;  // EXT_texture_webp is used: WebP images are glTF images
+    bool m_allow_ktx2 = false;     // KHR_texture_basisu is used: KTX2 images are glTF images
+    bool m_ktx2_required = false;  // ... and required: an undecodable one is an error
     std::map<std::pair<int, int>, int> m_textures, m_images;  // -1: undecodable
-    std::set<int> m_undecodable;                              // glTF image indices
+    std::map<int, std::string> m_undecodable;  // glTF image indices, and why
+    std::set<int> m_ktx2_warned;               // KTX2 images replaced by their fallback
     ImagePrefetch* m_prefetch = nullptr;
     std::set<int> m_mipmapped;  // glTF images that a texture samples with mipmaps
 };

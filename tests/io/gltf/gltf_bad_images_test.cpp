@@ -139,40 +139,52 @@ TEST(GltfBadImages, OnlyPngAndJpegWithoutWebpExtension) {
     }
 }
 
-// KHR_texture_basisu with real KTX2 bytes: the texture's `source` fallback is used and the
-// KTX2 image is never decoded (no warning); without a fallback, an error naming the
-// texture and why (Debian 12 packages no Basis Universal transcoder).
-TEST(GltfBadImages, BasisuUsesTheFallbackAndNeverDecodesKtx2) {
+// KHR_texture_basisu with corrupt KTX2 bytes (the identifier alone): where the extension
+// is optional, one warning naming the image and the texture's `source` fallback; without
+// a fallback, or where the extension is required, an error naming the image and why.
+TEST(GltfBadImages, BasisuFallsBackOrFailsNamingTheImage) {
     ScratchDir dir;
     const std::string ktx2 = "\xABKTX 20\xBB\r\n\x1a\n";
     std::ofstream(dir.file("t.ktx2"), std::ios::binary) << ktx2;
     GltfBuilder b;
     b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
-    auto load = [&](const std::string& texture) {
+    auto load = [&](const std::string& texture, bool required = false) {
         const std::string members =
-            R"("extensionsUsed": ["KHR_texture_basisu"],
-            "images": [{"uri": ")" +
-            test::png_uri(dir) +
+            R"("extensionsUsed": ["KHR_texture_basisu"],)" +
+            std::string(required ? R"("extensionsRequired": ["KHR_texture_basisu"],)" : "") +
+            R"("images": [{"uri": ")" + test::png_uri(dir) +
             R"("}, {"uri": "t.ktx2", "mimeType": "image/ktx2"}], "textures": [)" + texture +
-            R"(], "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],)" +
+            R"(], "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}},
+                             {"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],)" +
             test::one_mesh_scene(R"({"attributes": {"POSITION": 0}, "material": 0})");
         return load_gltf(b.write(dir, "basisu.gltf", members, BufferStorage::DataUri));
     };
+    const std::string both =
+        R"({"source": 0, "extensions": {"KHR_texture_basisu": {"source": 1}}})";
     testing::internal::CaptureStderr();
-    const Scene s = load(R"({"source": 0, "extensions": {"KHR_texture_basisu": {"source": 1}}})");
+    const Scene s = load(both);
     const std::string log = testing::internal::GetCapturedStderr();
     EXPECT_EQ(s.images.size(), 1u);
     EXPECT_TRUE(s.materials.at(0).base_color_texture.valid());
-    EXPECT_EQ(log.find("cannot decode"), std::string::npos) << log;
-    try {
-        load(R"({"extensions": {"KHR_texture_basisu": {"source": 1}}})");
-        ADD_FAILURE();
-    } catch (const SceneError& e) {
-        EXPECT_EQ(std::string(e.what()),
-                  dir.file("basisu.gltf") +
-                      ": textures[0]: has only a KHR_texture_basisu (KTX2) source and no "
-                      "fallback source image; KTX2 cannot be decoded (no Basis Universal "
-                      "decoder)");
+    EXPECT_EQ(count(log, "basisu.gltf: images[1] ('t.ktx2'): cannot decode KTX2 image: "
+                                "KTX2: truncated KTX2 header; using the fallback source "
+                                "images[0]"),
+              1u)
+        << log;
+    const std::pair<std::string, bool> failing[] = {
+        {R"({"extensions": {"KHR_texture_basisu": {"source": 1}}})", false}, {both, true}};
+    for (const auto& [texture, required] : failing) {
+        try {
+            load(texture, required);
+            ADD_FAILURE() << texture;
+        } catch (const SceneError& e) {
+            EXPECT_EQ(std::string(e.what()),
+                      dir.file("basisu.gltf") +
+                          ": images[1] ('t.ktx2'): cannot decode KTX2 image: KTX2: truncated "
+                          "KTX2 header" +
+                          (required ? " (KHR_texture_basisu is required)"
+                                    : " (no fallback source)"));
+        }
     }
 }
 
