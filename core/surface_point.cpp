@@ -59,6 +59,142 @@ void set_uv_widths(const TriangleMesh& mesh, const Transform& xf, const Ray& ray
     }
 }
 
+// The hit's place on the triangle: its vertices (where the general path reads them),
+// the barycentric point q on the mesh, and the point p in the world with its error bound.
+struct TrianglePoint {
+    Vec3 p0, p1, p2, q, p, p_error;
+};
+
+// Interpolating the vertices is more accurate than o + t d far from the origin. The
+// surface is where it was at the ray's time (motion.h: the static data when the mesh
+// does not deform).
+template <bool kBare>
+[[gnu::always_inline]] inline void locate_hit(const TriangleMesh& mesh, const Transform& xf,
+                                              const Ray& ray, const uint32_t idx[3], float b0,
+                                              float b1, float b2, TrianglePoint& t) {
+    const uint32_t i0 = idx[0], i1 = idx[1], i2 = idx[2];
+    if (kBare && xf.is_affine()) {
+        // The general lines below for a facet, in SSE lanes: the same operations in the
+        // same order, so the same bits, in about 40 instructions fewer on a translated
+        // instance (most bare facets' instances are translations, every identity one)
+        // and 30 on any other (the point's rows and point_error's as columns times q's
+        // coordinates; point() divides by no w for an affine matrix).
+        const F4 a0 = F4::load3(mesh.positions[i0]) * F4(b0),
+                 a1 = F4::load3(mesh.positions[i1]) * F4(b1),
+                 a2 = F4::load3(mesh.positions[i2]) * F4(b2);
+        const F4 q4 = a0 + a1 + a2;
+        const F4 q_err = (abs4(a0) + abs4(a1) + abs4(a2)) * F4(gamma(7));
+        if (xf.is_translation_only()) {
+            const F4 c3 = F4::load(xf.column(3));
+            t.p = (q4 + c3).xyz();
+            t.p_error = (F4(gamma(3) + 1) * q_err + F4(gamma(3)) * (abs4(q4) + abs4(c3))).xyz();
+            return;
+        }
+        const F4 c0 = F4::load(xf.column(0)), c1 = F4::load(xf.column(1)),
+                 c2 = F4::load(xf.column(2)), c3 = F4::load(xf.column(3));
+        const F4 x = c0 * q4.broadcast<0>(), y = c1 * q4.broadcast<1>(), z = c2 * q4.broadcast<2>();
+        t.p = (x + y + z + c3).xyz();
+        const F4 carried = abs4(c0) * q_err.broadcast<0>() + abs4(c1) * q_err.broadcast<1>() +
+                           abs4(c2) * q_err.broadcast<2>();
+        const F4 made = abs4(x) + abs4(y) + abs4(z) + abs4(c3);
+        t.p_error = (F4(gamma(3) + 1) * carried + F4(gamma(3)) * made).xyz();
+        return;
+    }
+    const bool deforms = !kBare && !mesh.motion_positions.empty();  // a facet: static
+    t.p0 = deforms ? position_at(mesh, i0, ray.time) : mesh.positions[i0];
+    t.p1 = deforms ? position_at(mesh, i1, ray.time) : mesh.positions[i1];
+    t.p2 = deforms ? position_at(mesh, i2, ray.time) : mesh.positions[i2];
+    t.q = t.p0 * b0 + t.p1 * b1 + t.p2 * b2;
+    t.p = xf.point(t.q);
+    t.p_error = point_error(xf, t.q, (abs(t.p0 * b0) + abs(t.p1 * b1) + abs(t.p2 * b2)) * gamma(7));
+}
+
+// The shading normal (and the smooth surface's point, p_smooth) from the vertex normals,
+// where the mesh has them and the facet is not flat; else ns and p_smooth stay as given
+// (ng and p), or ns turns to n0's side of a flat facet. face: the unnormalized face
+// normal, computed where the hit has no facet.
+template <bool kBare>
+[[gnu::always_inline]] inline void shading_normal(const TriangleMesh& mesh, const Transform& xf,
+                                                  const Ray& ray, const uint32_t idx[3],
+                                                  const float b[3], const Facet* facet,
+                                                  const TrianglePoint& t, const Vec3& face, Vec3 ng,
+                                                  bool has_ng, Vec3& ns, Vec3& p_smooth) {
+    if (kBare || (facet && has_ng && (facet->flags & Facet::kFlat))) {
+        // A flat facet's shading normal is ng on n0's side (is_flat_facet): no vertex
+        // normal to read, transform and normalize at each hit. (A bare facet without
+        // normals is never kOpposed: ns is ng.)
+        if (facet->flags & Facet::kOpposed) ns = -ng;
+        return;
+    }
+    if (mesh.normals.empty()) return;
+    const bool bends = !mesh.motion_normals.empty();
+    auto normal = [&](uint32_t i) {
+        return bends ? normal_at(mesh, i, ray.time) : mesh.normals[i];
+    };
+    const Vec3 n0 = normal(idx[0]);
+    Vec3 n1, n2;
+    bool flat;
+    if (facet) {  // only a flat facet's n1 and n2 go unread
+        flat = (facet->flags & Facet::kFlat) != 0;
+        if (!flat) {
+            n1 = normal(idx[1]);
+            n2 = normal(idx[2]);
+        }
+    } else {
+        n1 = normal(idx[1]);
+        n2 = normal(idx[2]);
+        flat = is_flat_facet(n0, n1, n2, face);
+    }
+    if (flat && has_ng) {
+        // The facet table's rule above, for hits without the table.
+        if (dot(n0, face) < 0) ns = -ng;
+        return;
+    }
+    Vec3 n = n0;
+    if (!flat) {
+        const Vec3 v[3] = {t.p0, t.p1, t.p2}, vn[3] = {n0, n1, n2};
+        p_smooth = xf.point(smooth_surface_point(t.q, v, vn, b));
+        n = n0 * b[0] + n1 * b[1] + n2 * b[2];
+    }
+    const Vec3 nw = xf.normal(n);
+    const float len = length(nw);
+    if (len > 0 && std::isfinite(len)) ns = nw / len;
+}
+
+// The interpolated vertex attributes a general hit reads: the UV sets, dp/du from the
+// first one's parameterization (for tangent frames), the tangent and the colour.
+struct HitAttributes {
+    Vec2 uv0, uv1;
+    Vec3 dpdu;
+    Vec4 tangent;
+    Vec4 color{1, 1, 1, 1};
+};
+
+[[gnu::always_inline]] inline void interpolate_attributes(const TriangleMesh& mesh,
+                                                          const Transform& xf,
+                                                          const uint32_t idx[3], const float b[3],
+                                                          const TrianglePoint& t,
+                                                          HitAttributes& a) {
+    const uint32_t i0 = idx[0], i1 = idx[1], i2 = idx[2];
+    if (!mesh.uv0.empty()) {
+        const Vec2 t0 = mesh.uv0[i0], t1 = mesh.uv0[i1], t2 = mesh.uv0[i2];
+        a.uv0 = t0 * b[0] + t1 * b[1] + t2 * b[2];
+        const Vec2 d1 = t1 - t0, d2 = t2 - t0;
+        const float det = d1.x * d2.y - d1.y * d2.x;
+        if (std::abs(det) > 1e-20f)
+            a.dpdu = xf.vector(((t.p1 - t.p0) * d2.y - (t.p2 - t.p0) * d1.y) / det);
+    }
+    if (!mesh.uv1.empty()) a.uv1 = mesh.uv1[i0] * b[0] + mesh.uv1[i1] * b[1] + mesh.uv1[i2] * b[2];
+    if (!mesh.tangents.empty()) {
+        const Vec4 tg =
+            mesh.tangents[i0] * b[0] + mesh.tangents[i1] * b[1] + mesh.tangents[i2] * b[2];
+        a.tangent = Vec4(xf.vector(tg.xyz()), mesh.tangents[i0].w < 0 ? -1.0f : 1.0f);
+        if (xf.swaps_handedness()) a.tangent.w = -a.tangent.w;
+    }
+    if (!mesh.colors.empty())
+        a.color = mesh.colors[i0] * b[0] + mesh.colors[i1] * b[1] + mesh.colors[i2] * b[2];
+}
+
 // The surface point on the mesh placed by xf (the instance's static transform, or its
 // motion's at the ray's time: a separate argument, so that a static instance's is read in
 // place, with no copy of the transform and its inverse). Every field is computed into a
@@ -74,52 +210,10 @@ template <bool kBare>
     const uint32_t idx[3] = {mesh.indices[3 * size_t(hit.prim)],
                              mesh.indices[3 * size_t(hit.prim) + 1],
                              mesh.indices[3 * size_t(hit.prim) + 2]};
-    const uint32_t i0 = idx[0], i1 = idx[1], i2 = idx[2];
     const float b1 = hit.b1, b2 = hit.b2, b0 = 1 - b1 - b2;
-
-    // The surface where it was at the ray's time (motion.h: the static data when the
-    // mesh does not deform).
-    const bool deforms = !kBare && !mesh.motion_positions.empty();  // a facet: static
-    // Interpolating the vertices is more accurate than o + t d far from the origin.
-    Vec3 p0, p1, p2, q, p, p_error;
-    if (kBare && xf.is_affine()) {
-        // The general lines below for a facet, in SSE lanes: the same operations in the
-        // same order, so the same bits, in about 40 instructions fewer on a translated
-        // instance (most bare facets' instances are translations, every identity one)
-        // and 30 on any other (the point's rows and point_error's as columns times q's
-        // coordinates; point() divides by no w for an affine matrix).
-        const F4 a0 = F4::load3(mesh.positions[i0]) * F4(b0),
-                 a1 = F4::load3(mesh.positions[i1]) * F4(b1),
-                 a2 = F4::load3(mesh.positions[i2]) * F4(b2);
-        const F4 q4 = a0 + a1 + a2;
-        const F4 q_err = (abs4(a0) + abs4(a1) + abs4(a2)) * F4(gamma(7));
-        if (xf.is_translation_only()) {
-            const F4 t = F4::load(xf.column(3));
-            p = (q4 + t).xyz();
-            p_error = (F4(gamma(3) + 1) * q_err + F4(gamma(3)) * (abs4(q4) + abs4(t))).xyz();
-        } else {
-            const F4 c0 = F4::load(xf.column(0)), c1 = F4::load(xf.column(1)),
-                     c2 = F4::load(xf.column(2)), c3 = F4::load(xf.column(3));
-            const F4 x = c0 * q4.broadcast<0>(), y = c1 * q4.broadcast<1>(),
-                     z = c2 * q4.broadcast<2>();
-            p = (x + y + z + c3).xyz();
-            const F4 carried = abs4(c0) * q_err.broadcast<0>() + abs4(c1) * q_err.broadcast<1>() +
-                               abs4(c2) * q_err.broadcast<2>();
-            const F4 made = abs4(x) + abs4(y) + abs4(z) + abs4(c3);
-            p_error = (F4(gamma(3) + 1) * carried + F4(gamma(3)) * made).xyz();
-        }
-    } else {
-        p0 = deforms ? position_at(mesh, i0, ray.time) : mesh.positions[i0];
-        p1 = deforms ? position_at(mesh, i1, ray.time) : mesh.positions[i1];
-        p2 = deforms ? position_at(mesh, i2, ray.time) : mesh.positions[i2];
-        q = p0 * b0 + p1 * b1 + p2 * b2;
-        p = xf.point(q);
-        p_error = point_error(xf, q, (abs(p0 * b0) + abs(p1 * b1) + abs(p2 * b2)) * gamma(7));
-    }
-    // The triangle's edges, where a branch below reads them: computed up front, they cost
-    // about 20 instructions at every hit of a facet from the accelerator's table.
-    auto e1 = [&] { return p1 - p0; };
-    auto e2 = [&] { return p2 - p0; };
+    const float b[3] = {b0, b1, b2};
+    TrianglePoint t;
+    locate_hit<kBare>(mesh, xf, ray, idx, b0, b1, b2, t);
     // The geometric normal and the flat-facet test (facet.h), from the hit's precomputed
     // facet where the accelerator has one, else here with the same functions.
     const Facet* facet = hit.facet;
@@ -129,91 +223,31 @@ template <bool kBare>
         has_ng = kBare || (facet->flags & Facet::kNormal) != 0;
         ng = facet->ng;
     } else {
-        face = cross(e1(), e2());
+        face = cross(t.p1 - t.p0, t.p2 - t.p0);
         has_ng = world_face_normal(xf, face, &ng);
     }
     if (!has_ng) ng = -normalize(ray.d);  // a degenerate triangle: face the ray
-
-    Vec3 ns = ng;
-    Vec3 p_smooth = p;
-    if (kBare || (facet && has_ng && (facet->flags & Facet::kFlat))) {
-        // A flat facet's shading normal is ng on n0's side (is_flat_facet): no vertex
-        // normal to read, transform and normalize at each hit. (A bare facet without
-        // normals is never kOpposed: ns is ng.)
-        if (facet->flags & Facet::kOpposed) ns = -ng;
-    } else if (!mesh.normals.empty()) {
-        const bool bends = !mesh.motion_normals.empty();
-        auto normal = [&](uint32_t i) {
-            return bends ? normal_at(mesh, i, ray.time) : mesh.normals[i];
-        };
-        const Vec3 n0 = normal(i0);
-        Vec3 n1, n2;
-        bool flat;
-        if (facet) {  // only a flat facet's n1 and n2 go unread
-            flat = (facet->flags & Facet::kFlat) != 0;
-            if (!flat) {
-                n1 = normal(i1);
-                n2 = normal(i2);
-            }
-        } else {
-            n1 = normal(i1);
-            n2 = normal(i2);
-            flat = is_flat_facet(n0, n1, n2, face);
-        }
-        if (flat && has_ng) {
-            // The facet table's rule above, for hits without the table.
-            if (dot(n0, face) < 0) ns = -ng;
-        } else {
-            Vec3 n = n0;
-            if (!flat) {
-                const Vec3 v[3] = {p0, p1, p2}, vn[3] = {n0, n1, n2};
-                const float b[3] = {b0, b1, b2};
-                p_smooth = xf.point(smooth_surface_point(q, v, vn, b));
-                n = n0 * b0 + n1 * b1 + n2 * b2;
-            }
-            const Vec3 nw = xf.normal(n);
-            const float len = length(nw);
-            if (len > 0 && std::isfinite(len)) ns = nw / len;
-        }
-    }
+    Vec3 ns = ng, p_smooth = t.p;
+    shading_normal<kBare>(mesh, xf, ray, idx, b, facet, t, face, ng, has_ng, ns, p_smooth);
     // The winding defines ng, but files are not always consistent with their normals:
     // trust the shading normals for which side is "outside".
     // (A bare facet's ns is +-ng, unit: the dot is +-1, and the flag says which.)
     const bool ng_is_front = kBare ? !(facet->flags & Facet::kOpposed) : !(dot(ng, ns) < 0);
     if (!ng_is_front) ng = -ng;
-
-    Vec2 uv0, uv1;
-    Vec3 dpdu;
-    if (!kBare && !mesh.uv0.empty()) {
-        const Vec2 t0 = mesh.uv0[i0], t1 = mesh.uv0[i1], t2 = mesh.uv0[i2];
-        uv0 = t0 * b0 + t1 * b1 + t2 * b2;
-        // dp/du from the triangle's UV parameterization (for tangent frames).
-        const Vec2 d1 = t1 - t0, d2 = t2 - t0;
-        const float det = d1.x * d2.y - d1.y * d2.x;
-        if (std::abs(det) > 1e-20f) dpdu = xf.vector((e1() * d2.y - e2() * d1.y) / det);
-    }
-    if (!kBare && !mesh.uv1.empty())
-        uv1 = mesh.uv1[i0] * b0 + mesh.uv1[i1] * b1 + mesh.uv1[i2] * b2;
-    Vec4 tangent;
-    if (!kBare && !mesh.tangents.empty()) {
-        const Vec4 t = mesh.tangents[i0] * b0 + mesh.tangents[i1] * b1 + mesh.tangents[i2] * b2;
-        tangent = Vec4(xf.vector(t.xyz()), mesh.tangents[i0].w < 0 ? -1.0f : 1.0f);
-        if (xf.swaps_handedness()) tangent.w = -tangent.w;
-    }
-    const Vec4 color = kBare || mesh.colors.empty()
-                           ? Vec4(1, 1, 1, 1)
-                           : mesh.colors[i0] * b0 + mesh.colors[i1] * b1 + mesh.colors[i2] * b2;
+    HitAttributes a;
+    if (!kBare) interpolate_attributes(mesh, xf, idx, b, t, a);
     float cone_width = 0, uv_width[2] = {0, 0};
     if (ray.cone.active()) {
         const float dlen = length(ray.d);
         cone_width = ray.cone.width_at(hit.t * dlen);
         if (!kBare)  // no UV set to give a width in
-            set_uv_widths(mesh, xf, ray, ng, idx, e1(), e2(), cone_width, dlen, uv_width);
+            set_uv_widths(mesh, xf, ray, ng, idx, t.p1 - t.p0, t.p2 - t.p0, cone_width, dlen,
+                          uv_width);
     }
     return SurfacePoint{
-        p,     p_smooth, p_error,      ng,       ng_is_front, ns,
-        dpdu,  tangent,  uv0,          uv1,      cone_width,  {uv_width[0], uv_width[1]},
-        color, hit.t,    hit.instance, hit.mesh, hit.prim,    mesh.material};
+        t.p,     p_smooth,  t.p_error,    ng,       ng_is_front, ns,
+        a.dpdu,  a.tangent, a.uv0,        a.uv1,    cone_width,  {uv_width[0], uv_width[1]},
+        a.color, hit.t,     hit.instance, hit.mesh, hit.prim,    mesh.material};
 }
 
 // A moving instance's hit, with its transform at the ray's time; out of line, so that

@@ -25,6 +25,182 @@ bool abandon(const RenderOptions& o) {
     return o.interrupts && o.interrupts->load(std::memory_order_relaxed) >= 2;
 }
 
+// Pixels go in blocks of 4 x 2. For an integrator that takes a traced first hit, a
+// full block's camera rays of one sample index are traced as one packet: coherent
+// rays cost Embree about a third as much each in a packet as one by one
+// (docs/performance.md, "Embree packets and streams"). Each pixel keeps its samples
+// in index order, and each lane its own sampler, so the image does not change.
+constexpr int kBlockW = 4, kBlockH = 2, kLanes = kBlockW * kBlockH;
+
+// Work items: tiles, split further (down to 4x4) until there are at least 32 per
+// thread, so a small image or a pass of few samples (the first passes render 1, 1,
+// 2 spp) still keeps every thread busy to the end of the pass; TBB steals the
+// rest. The image does not depend on it: each pixel's samples stay in index order
+// in one work item.
+struct TileGrid {
+    int row0, row1, size, tiles_x, tiles_y;
+};
+
+TileGrid plan_tiles(const RenderOptions& options, int w, int h, int threads) {
+    TileGrid g;
+    g.row0 = std::clamp(options.row_begin, 0, h);
+    g.row1 = options.row_end > 0 ? std::clamp(options.row_end, g.row0, h) : h;
+    int ts = std::max(1, options.tile_size);
+    auto tile_count = [&](int size) {
+        return ((w + size - 1) / size) * ((g.row1 - g.row0 + size - 1) / size);
+    };
+    while (ts > 4 && tile_count(ts) < 32 * threads) ts = std::max(4, ts / 2);
+    g.size = ts;
+    g.tiles_x = (w + ts - 1) / ts;
+    g.tiles_y = (g.row1 - g.row0 + ts - 1) / ts;
+    return g;
+}
+
+// What every tile of one pass reads.
+struct Pass {
+    const RenderContext& ctx;
+    const Camera& camera;
+    const Integrator& integrator;
+    const RenderOptions& options;
+    Film& film;
+    const Filter& filter;
+    // Built for the whole budget: stratified and Sobol index their strata by the sample
+    // index within [0, spp), whatever the pass. With two halves (the error AOV, denoising),
+    // even and odd sample indices are two independently seeded sample streams of half the
+    // budget each (sample 2i is stream 0's i-th, 2i+1 stream 1's): the difference of two
+    // independent randomised estimates is a valid error estimate for any sampler, where
+    // the spread of one QMC pixel's samples is not (Owen 2013, ch. 17, "replicates").
+    const std::unique_ptr<Sampler>* prototypes;
+    bool halves, first_hit, guides, packets;
+    uint32_t first, last;
+    const std::vector<uint8_t>* active;
+    TileGrid grid;
+    ProgressReporter* progress;
+    std::atomic<bool>& abandoned;
+};
+
+// The samplers of a tile: one per lane, and per half where the film splits them.
+struct TileSamplers {
+    std::unique_ptr<Sampler> samplers[2][kLanes];
+    bool halves;
+    TileSamplers(const Pass& pass, int lanes) : halves(pass.halves) {
+        for (int i = 0; i < lanes; ++i) {
+            samplers[0][i] = pass.prototypes[0]->clone();
+            if (halves) samplers[1][i] = pass.prototypes[1]->clone();
+        }
+    }
+    Sampler& for_sample(int lane, uint32_t s) {
+        return halves ? *samplers[s & 1][lane] : *samplers[0][lane];
+    }
+};
+
+// Sample s of pixel (x, y): its camera ray, constructed at `ray` (an existing Ray,
+// whose storage it reuses), the sampler left after the camera's dimensions for the
+// integrator. In place: a ray assigned from a returned one is copied with 16-byte
+// loads of the camera's narrower stores just made, which wait for those stores at
+// every sample.
+inline void camera_ray(const Pass& pass, int x, int y, uint32_t s, Sampler& sampler,
+                       FilterSample& fs, Ray* ray) {
+    sampler.start_pixel_sample({x, y}, pass.halves ? s >> 1 : s);
+    // Filter importance sampling: the offset follows the filter, so the sample
+    // only contributes to this pixel (with weight 1: Filter::sample).
+    fs = pass.filter.sample(sampler.get_pixel_2d());
+    CameraSample cs;
+    cs.film = {x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
+    if (pass.camera.reads_lens())
+        cs.lens = sampler.get_2d();
+    else
+        sampler.skip_2d();
+    cs.time = sampler.get_1d();
+    static_assert(std::is_trivially_destructible_v<Ray>, "reused without destruction");
+    ::new (ray) Ray(pass.camera.generate_ray(cs));
+    if (!pass.ctx.ray_cones) ray->cone = RayCone{};
+}
+
+// A sample's radiance to the film, with its AOVs where the film has any (kAovs: a
+// separate instantiation, so that a render without them does no AOV work per sample).
+template <bool kAovs>
+inline void add_sample(const Pass& pass, int x, int y, uint32_t s, const Ray& ray,
+                       const Spectrum& L, const FilterSample& fs) {
+    if constexpr (kAovs) {
+        const uint64_t key = hash_values(pass.options.seed, x, y, s);
+        AovRecord aov = pass.first_hit ? first_hit_aovs(ray, pass.ctx, key) : AovRecord{};
+        if (pass.guides) aov.guide = denoise_guide(ray, pass.ctx, key);
+        aov.odd = (s & 1) != 0;
+        pass.film.add_sample(x, y, L, fs.weight, aov);
+    } else {
+        pass.film.add_sample(x, y, L, fs.weight);
+    }
+}
+
+// A full block's samples, each sample index's camera rays traced as one packet.
+template <bool kAovs>
+inline void render_packets(const Pass& pass, TileSamplers& samplers, const int xs[kLanes],
+                           const int ys[kLanes]) {
+    for (uint32_t s = pass.first; s < pass.last; ++s) {
+        Ray rays[kLanes];
+        FilterSample fs[kLanes];
+        for (int i = 0; i < kLanes; ++i)
+            camera_ray(pass, xs[i], ys[i], s, samplers.for_sample(i, s), fs[i], &rays[i]);
+        std::optional<Hit> hits[kLanes];
+        pass.ctx.accel.intersect8(rays, hits);
+        for (int i = 0; i < kLanes; ++i)
+            add_sample<kAovs>(
+                pass, xs[i], ys[i], s, rays[i],
+                pass.integrator.Li_from_hit(rays[i], hits[i], pass.ctx, samplers.for_sample(i, s)),
+                fs[i]);
+    }
+}
+
+// A partial block (image edge, inactive pixels) or an integrator without first hits:
+// one ray at a time.
+template <bool kAovs>
+inline void render_one_by_one(const Pass& pass, TileSamplers& samplers, const int xs[kLanes],
+                              const int ys[kLanes], int n) {
+    for (int i = 0; i < n; ++i)
+        for (uint32_t s = pass.first; s < pass.last; ++s) {
+            Sampler& sampler = samplers.for_sample(0, s);
+            FilterSample fs;
+            Ray ray;
+            camera_ray(pass, xs[i], ys[i], s, sampler, fs, &ray);
+            add_sample<kAovs>(pass, xs[i], ys[i], s, ray,
+                              pass.integrator.Li(ray, pass.ctx, sampler), fs);
+        }
+}
+
+template <bool kAovs>
+void render_tile(const Pass& pass, int tile) {
+    const int w = pass.camera.width(), ts = pass.grid.size;
+    TileSamplers samplers(pass, pass.packets ? kLanes : 1);
+    const int x0 = (tile % pass.grid.tiles_x) * ts,
+              y0 = pass.grid.row0 + (tile / pass.grid.tiles_x) * ts;
+    const int x1 = std::min(x0 + ts, w), y1 = std::min(y0 + ts, pass.grid.row1);
+    uint64_t taken = 0;
+    for (int by = y0; by < y1; by += kBlockH) {
+        // A second Ctrl-C should not wait for the pass: check once per block row.
+        if (abandon(pass.options)) {
+            pass.abandoned = true;
+            return;
+        }
+        for (int bx = x0; bx < x1; bx += kBlockW) {
+            int xs[kLanes], ys[kLanes], n = 0;
+            for (int y = by; y < std::min(by + kBlockH, y1); ++y)
+                for (int x = bx; x < std::min(bx + kBlockW, x1); ++x)
+                    if (!pass.active || (*pass.active)[size_t(y) * w + x]) {
+                        xs[n] = x;
+                        ys[n] = y;
+                        ++n;
+                    }
+            taken += uint64_t(n) * (pass.last - pass.first);
+            if (pass.packets && n == kLanes)
+                render_packets<kAovs>(pass, samplers, xs, ys);
+            else
+                render_one_by_one<kAovs>(pass, samplers, xs, ys, n);
+        }
+    }
+    if (pass.progress) pass.progress->update(taken);
+}
+
 }  // namespace
 
 bool render_samples(const RenderContext& ctx, const Camera& camera, const Integrator& integrator,
@@ -33,150 +209,42 @@ bool render_samples(const RenderContext& ctx, const Camera& camera, const Integr
     const int w = camera.width(), h = camera.height();
     CHECK(film.width() == w && film.height() == h);
     CHECK(!active || active->size() == size_t(w) * h);
-    const Filter& filter = shared_filter(options.filter);
-    // Built for the whole budget: stratified and Sobol index their strata by the sample
-    // index within [0, spp), whatever the pass. With two halves (the error AOV, denoising),
-    // even and odd sample indices are two independently seeded sample streams of half the
-    // budget each (sample 2i is stream 0's i-th, 2i+1 stream 1's): the difference of two
-    // independent randomised estimates is a valid error estimate for any sampler, where
-    // the spread of one QMC pixel's samples is not (Owen 2013, ch. 17, "replicates").
+    // Two halves: two independently seeded streams (Pass::prototypes).
     const bool halves = film.aovs().splits_halves();
     const uint32_t budget = std::max(options.spp, last);
-    std::unique_ptr<Sampler> prototypes[2] = {
+    const std::unique_ptr<Sampler> prototypes[2] = {
         make_sampler(options.sampler, halves ? (budget + 1) / 2 : budget, options.seed),
         halves ? make_sampler(options.sampler, (budget + 1) / 2,
                               hash_values(options.seed, 0x68616c76657331ull))
                : nullptr};
-
     const int threads =
         options.threads > 0 ? options.threads : tbb::this_task_arena::max_concurrency();
-    // Work items: tiles, split further (down to 4x4) until there are at least 32 per
-    // thread, so a small image or a pass of few samples (the first passes render 1, 1,
-    // 2 spp) still keeps every thread busy to the end of the pass; TBB steals the
-    // rest. The image does not depend on it: each pixel's samples stay in index order
-    // in one work item.
-    const int row0 = std::clamp(options.row_begin, 0, h);
-    const int row1 = options.row_end > 0 ? std::clamp(options.row_end, row0, h) : h;
-    int ts = std::max(1, options.tile_size);
-    auto tile_count = [&](int size) {
-        return ((w + size - 1) / size) * ((row1 - row0 + size - 1) / size);
-    };
-    while (ts > 4 && tile_count(ts) < 32 * threads) ts = std::max(4, ts / 2);
-    const int tiles_x = (w + ts - 1) / ts, tiles_y = (row1 - row0 + ts - 1) / ts;
     std::atomic<bool> abandoned{false};
-
-    // AOVs get their own instantiation of the tile loop, so a render without them does
-    // no AOV work per sample.
-    const bool first_hit = film.aovs().needs_first_hit();
-    const bool guides = film.aovs().has(Aov::Denoise);
-    // Pixels go in blocks of 4 x 2. For an integrator that takes a traced first hit, a
-    // full block's camera rays of one sample index are traced as one packet: coherent
-    // rays cost Embree about a third as much each in a packet as one by one
-    // (docs/performance.md, "Embree packets and streams"). Each pixel keeps its samples
-    // in index order, and each lane its own sampler, so the image does not change.
-    constexpr int kBlockW = 4, kBlockH = 2, kLanes = kBlockW * kBlockH;
-    const bool packets = integrator.uses_first_hit();
-    auto render_tile = [&](int tile, auto with_aovs) {
-        const int lanes = packets ? kLanes : 1;
-        std::unique_ptr<Sampler> samplers[2][kLanes];
-        for (int i = 0; i < lanes; ++i) {
-            samplers[0][i] = prototypes[0]->clone();
-            if (halves) samplers[1][i] = prototypes[1]->clone();
-        }
-        auto sampler_for = [&](int lane, uint32_t s) -> Sampler& {
-            return halves ? *samplers[s & 1][lane] : *samplers[0][lane];
-        };
-        // Sample s of pixel (x, y): its camera ray, constructed at `ray` (an existing Ray,
-        // whose storage it reuses), the sampler left after the camera's dimensions for the
-        // integrator. In place: a ray assigned from a returned one is copied with 16-byte
-        // loads of the camera's narrower stores just made, which wait for those stores at
-        // every sample.
-        auto camera_ray = [&](int x, int y, uint32_t s, Sampler& sampler, FilterSample& fs,
-                              Ray* ray) {
-            sampler.start_pixel_sample({x, y}, halves ? s >> 1 : s);
-            // Filter importance sampling: the offset follows the filter, so the sample
-            // only contributes to this pixel (with weight 1: Filter::sample).
-            fs = filter.sample(sampler.get_pixel_2d());
-            CameraSample cs;
-            cs.film = {x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
-            if (camera.reads_lens())
-                cs.lens = sampler.get_2d();
-            else
-                sampler.skip_2d();
-            cs.time = sampler.get_1d();
-            static_assert(std::is_trivially_destructible_v<Ray>, "reused without destruction");
-            ::new (ray) Ray(camera.generate_ray(cs));
-            if (!ctx.ray_cones) ray->cone = RayCone{};
-        };
-        auto add = [&](int x, int y, uint32_t s, const Ray& ray, const Spectrum& L,
-                       const FilterSample& fs) {
-            if constexpr (decltype(with_aovs)::value) {
-                const uint64_t key = hash_values(options.seed, x, y, s);
-                AovRecord aov = first_hit ? first_hit_aovs(ray, ctx, key) : AovRecord{};
-                if (guides) aov.guide = denoise_guide(ray, ctx, key);
-                aov.odd = (s & 1) != 0;
-                film.add_sample(x, y, L, fs.weight, aov);
-            } else {
-                film.add_sample(x, y, L, fs.weight);
-            }
-        };
-        const int x0 = (tile % tiles_x) * ts, y0 = row0 + (tile / tiles_x) * ts;
-        const int x1 = std::min(x0 + ts, w), y1 = std::min(y0 + ts, row1);
-        uint64_t taken = 0;
-        for (int by = y0; by < y1; by += kBlockH) {
-            // A second Ctrl-C should not wait for the pass: check once per block row.
-            if (abandon(options)) {
-                abandoned = true;
-                return;
-            }
-            for (int bx = x0; bx < x1; bx += kBlockW) {
-                int xs[kLanes], ys[kLanes], n = 0;
-                for (int y = by; y < std::min(by + kBlockH, y1); ++y)
-                    for (int x = bx; x < std::min(bx + kBlockW, x1); ++x)
-                        if (!active || (*active)[size_t(y) * w + x]) {
-                            xs[n] = x;
-                            ys[n] = y;
-                            ++n;
-                        }
-                taken += uint64_t(n) * (last - first);
-                if (packets && n == kLanes) {
-                    for (uint32_t s = first; s < last; ++s) {
-                        Ray rays[kLanes];
-                        FilterSample fs[kLanes];
-                        for (int i = 0; i < kLanes; ++i)
-                            camera_ray(xs[i], ys[i], s, sampler_for(i, s), fs[i], &rays[i]);
-                        std::optional<Hit> hits[kLanes];
-                        ctx.accel.intersect8(rays, hits);
-                        for (int i = 0; i < kLanes; ++i)
-                            add(xs[i], ys[i], s, rays[i],
-                                integrator.Li_from_hit(rays[i], hits[i], ctx, sampler_for(i, s)),
-                                fs[i]);
-                    }
-                    continue;
-                }
-                // A partial block (image edge, inactive pixels) or an integrator without
-                // first hits: one ray at a time.
-                for (int i = 0; i < n; ++i)
-                    for (uint32_t s = first; s < last; ++s) {
-                        Sampler& sampler = sampler_for(0, s);
-                        FilterSample fs;
-                        Ray ray;
-                        camera_ray(xs[i], ys[i], s, sampler, fs, &ray);
-                        add(xs[i], ys[i], s, ray, integrator.Li(ray, ctx, sampler), fs);
-                    }
-            }
-        }
-        if (progress) progress->update(taken);
-    };
-
+    const Pass pass{ctx,
+                    camera,
+                    integrator,
+                    options,
+                    film,
+                    shared_filter(options.filter),
+                    prototypes,
+                    halves,
+                    film.aovs().needs_first_hit(),
+                    film.aovs().has(Aov::Denoise),
+                    integrator.uses_first_hit(),
+                    first,
+                    last,
+                    active,
+                    plan_tiles(options, w, h, threads),
+                    progress,
+                    abandoned};
     auto run = [&] {
-        tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y),
+        tbb::parallel_for(tbb::blocked_range<int>(0, pass.grid.tiles_x * pass.grid.tiles_y),
                           [&](const tbb::blocked_range<int>& r) {
                               for (int t = r.begin(); t != r.end(); ++t) {
                                   if (film.aovs().any())
-                                      render_tile(t, std::true_type{});
+                                      render_tile<true>(pass, t);
                                   else
-                                      render_tile(t, std::false_type{});
+                                      render_tile<false>(pass, t);
                               }
                           });
     };
