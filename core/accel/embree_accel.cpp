@@ -149,7 +149,7 @@ struct EmbreeAccel::Impl {
             h.mesh = ids.mesh;
             if (ids.facets) h.facet = ids.facets + prim;
             TriangleHit th;
-            if (triangle_plane_hit(ids.planes[prim], ray.o, ray.d, &th)) set(th, &h);
+            if (triangle_plane_hit(ids.planes[prim], ray, &th)) set(th, &h);
         } else {
             h.instance = inst_id;
             h.mesh = mesh_ids[instance_object[inst_id]][geom_id];

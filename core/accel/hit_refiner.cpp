@@ -27,10 +27,11 @@ bool HitRefiner::plane_hit(const Ray& ray, uint32_t instance, uint32_t mesh_inde
         for (int k = 0; k < 3; ++k) p[k] = position_at(mesh, idx[k], ray.time);
     }
     const Placement& pl = m_placements[instance];
-    if (pl.identity) return triangle_plane_hit(ray.o, ray.d, p[0], p[1], p[2], hit);
+    const TrianglePlane plane = make_triangle_plane(p[0], p[1], p[2]);
+    if (pl.identity) return triangle_plane_hit(plane, ray, hit);
     const Ray oray = pl.motion == kStatic ? transform_ray(pl.to_object, ray)
                                           : moving_object_ray(m_motion[pl.motion], ray);
-    return triangle_plane_hit(oray.o, oray.d, p[0], p[1], p[2], hit);
+    return triangle_plane_hit(plane, oray, hit);
 }
 
 std::vector<TrianglePlane> world_triangle_planes(const TriangleMesh& mesh,

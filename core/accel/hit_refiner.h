@@ -2,14 +2,15 @@
 // with our own arithmetic: t and the barycentrics of a hit then do not depend on which
 // instruction set, CPU vendor or approximate reciprocal the traversal used. The ray is
 // mapped into the instance's object space as BvhAccel maps it (instance_transform.h),
-// a deforming triangle taken at the ray's time, and triangle_plane_hit does the rest.
+// a deforming triangle taken at the ray's time, and triangle_plane_hit (triangle_plane.h)
+// does the rest.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "core/accel/instance_transform.h"
-#include "core/accel/triangle_intersect.h"
+#include "core/accel/triangle_plane.h"
 #include "core/scene/scene.h"
 
 namespace penumbra {

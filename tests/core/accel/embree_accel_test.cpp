@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/accel/accel_check.h"
-#include "core/accel/triangle_intersect.h"
+#include "core/accel/triangle_plane.h"
 #include "core/facet.h"
 #include "core/sampling/rng.h"
 #include "core/sampling/warp.h"
