@@ -116,8 +116,9 @@ struct EmbreeAccel::Impl {
     std::vector<FlatMesh> flat_ids;
     // Recomputes hits on instanced triangles (flattened ones use their planes below).
     HitRefiner refiner;
-    // Some instance moves or some instanced mesh deforms: every query is filtered.
-    bool filter_every_query = false;
+    // Queries whose tmin is above this are filtered (needs_filter): -inf where some
+    // instance moves or some instanced mesh deforms (every query), else 0.
+    float filter_above = 0;
     // The flattened meshes' facets: per hit on them, make_surface_point reads the world
     // normal and the flat-shading flag instead of recomputing them (16 bytes a triangle,
     // within EmbreeBuildOptions::flatten_budget triangles).
@@ -218,9 +219,9 @@ void refined_t_filter(const RTCFilterFunctionNArguments* args) {
     }
 }
 
-// Whether a query needs refined_t_filter.
+// Whether a query needs refined_t_filter (one comparison, as it is asked per ray).
 bool needs_filter(const EmbreeAccel::Impl& im, const Ray& ray) {
-    return im.filter_every_query || ray.tmin > 0;
+    return ray.tmin > im.filter_above;
 }
 
 // Which instances are traced as world-space triangles (EmbreeBuildOptions::flatten):
@@ -335,7 +336,8 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
         im.object_scenes[oi] = s;
         for (uint32_t mesh_index : scene.objects[oi].meshes) {
             const TriangleMesh& mesh = scene.meshes[mesh_index];
-            im.filter_every_query |= moves[oi] || !mesh.motion_positions.empty();
+            if (moves[oi] || !mesh.motion_positions.empty())
+                im.filter_above = -std::numeric_limits<float>::infinity();
             RTCGeometry g = new_triangles(mesh, nullptr);
             const uint32_t geom_id = rtcAttachGeometry(s, g);
             rtcReleaseGeometry(g);
@@ -436,14 +438,20 @@ std::optional<Hit> EmbreeAccel::do_intersect(const Ray& ray) const {
 // the query is then asked again with the filter, which rejects that candidate, so a
 // reported hit always lies in the ray's interval by our t.
 std::optional<Hit> EmbreeAccel::closest_hit(const Ray& ray, bool filtered) const {
-    QueryContext ctx;
-    init_context(&ctx, &ray, m_impl.get());
-    if (filtered) ctx.embree.filter = refined_t_filter;
     RTCRayHit rh;
     fill_ray(ray, rh.ray);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(m_impl->top, &ctx.embree, &rh);
+    if (filtered) {
+        QueryContext ctx;
+        init_context(&ctx, &ray, m_impl.get());
+        ctx.embree.filter = refined_t_filter;
+        rtcIntersect1(m_impl->top, &ctx.embree, &rh);
+    } else {
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        rtcIntersect1(m_impl->top, &ctx, &rh);
+    }
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
     const Hit h = m_impl->hit(ray, rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, rh.hit.u,
                               rh.hit.v, rh.ray.tfar);
@@ -452,12 +460,18 @@ std::optional<Hit> EmbreeAccel::closest_hit(const Ray& ray, bool filtered) const
 }
 
 bool EmbreeAccel::do_occluded(const Ray& ray) const {
-    QueryContext ctx;
-    init_context(&ctx, &ray, m_impl.get());
-    if (needs_filter(*m_impl, ray)) ctx.embree.filter = refined_t_filter;
     RTCRay r;
     fill_ray(ray, r);
-    rtcOccluded1(m_impl->top, &ctx.embree, &r);
+    if (needs_filter(*m_impl, ray)) {
+        QueryContext ctx;
+        init_context(&ctx, &ray, m_impl.get());
+        ctx.embree.filter = refined_t_filter;
+        rtcOccluded1(m_impl->top, &ctx.embree, &r);
+    } else {
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        rtcOccluded1(m_impl->top, &ctx, &r);
+    }
     return r.tfar == -std::numeric_limits<float>::infinity();
 }
 
