@@ -248,9 +248,16 @@ void EmbreeAccel::Impl::build_object_scenes(const Scene& scene, const std::vecto
                                             const EmbreeBuildOptions& options) {
     std::vector<bool> needs_scene(scene.objects.size(), false);
     std::vector<bool> moves(scene.objects.size(), false);  // placed by a moving instance
+    // Static instanced meshes keep their triangles' planes (HitRefiner::keep_planes) within
+    // what flatten_budget leaves after the flattened copies, whose planes it also counts.
+    size_t plane_budget = options.flatten_budget;
     for (size_t ii = 0; ii < scene.instances.size(); ++ii) {
-        if (!flat[ii]) needs_scene[scene.instances[ii].object] = true;
-        if (!scene.instances[ii].motion.empty()) moves[scene.instances[ii].object] = true;
+        const uint32_t object = scene.instances[ii].object;
+        if (!flat[ii]) needs_scene[object] = true;
+        if (!scene.instances[ii].motion.empty()) moves[object] = true;
+        if (flat[ii])
+            for (uint32_t mi : scene.objects[object].meshes)
+                plane_budget -= std::min(plane_budget, scene.meshes[mi].triangle_count());
     }
     object_scenes.assign(scene.objects.size(), nullptr);
     for (size_t oi = 0; oi < scene.objects.size(); ++oi) {
@@ -264,7 +271,10 @@ void EmbreeAccel::Impl::build_object_scenes(const Scene& scene, const std::vecto
             RTCGeometry g = new_triangles(mesh, nullptr);
             const uint32_t geom_id = rtcAttachGeometry(s, g);
             rtcReleaseGeometry(g);
-            hits.add_object_mesh(static_cast<uint32_t>(oi), geom_id, mesh_index);
+            const bool keep =
+                mesh.motion_positions.empty() && mesh.triangle_count() <= plane_budget;
+            if (keep) plane_budget -= mesh.triangle_count();
+            hits.add_object_mesh(static_cast<uint32_t>(oi), geom_id, mesh_index, keep);
         }
         rtcCommitScene(s);
         throw_if_error("building an object scene");
@@ -330,8 +340,8 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
     m_stats.object_scenes = static_cast<size_t>(std::count_if(
         im.object_scenes.begin(), im.object_scenes.end(), [](RTCScene s) { return s != nullptr; }));
     m_stats.instances = scene.instances.size() - m_flattened;
-    m_stats.memory_bytes =
-        static_cast<size_t>(std::max<int64_t>(0, im.memory.load())) + m_facet_bytes;
+    m_stats.memory_bytes = static_cast<size_t>(std::max<int64_t>(0, im.memory.load())) +
+                           m_facet_bytes + im.hits.kept_plane_bytes();
 }
 
 EmbreeAccel::~EmbreeAccel() = default;

@@ -12,10 +12,12 @@ EmbreeHitMap::EmbreeHitMap(const Scene& scene)
         m_instance_object[ii] = scene.instances[ii].object;
 }
 
-void EmbreeHitMap::add_object_mesh(uint32_t object, uint32_t geom_id, uint32_t mesh) {
+void EmbreeHitMap::add_object_mesh(uint32_t object, uint32_t geom_id, uint32_t mesh,
+                                   bool keep_planes) {
     std::vector<uint32_t>& ids = m_mesh_ids[object];
     if (ids.size() <= geom_id) ids.resize(geom_id + 1);
     ids[geom_id] = mesh;
+    if (keep_planes) m_kept_plane_bytes += m_refiner.keep_planes(mesh);
 }
 
 uint32_t EmbreeHitMap::add_flat_mesh(uint32_t instance, uint32_t mesh_index,

@@ -24,8 +24,9 @@ public:
     // instances; flattened meshes follow (add_flat_mesh).
     explicit EmbreeHitMap(const Scene& scene);
 
-    // geomID geom_id of object `object`'s Embree scene is Scene mesh `mesh`.
-    void add_object_mesh(uint32_t object, uint32_t geom_id, uint32_t mesh);
+    // geomID geom_id of object `object`'s Embree scene is Scene mesh `mesh`; keep_planes:
+    // precompute its triangles' planes (HitRefiner::keep_planes).
+    void add_object_mesh(uint32_t object, uint32_t geom_id, uint32_t mesh, bool keep_planes);
     // A flattened copy of Scene mesh `mesh` placed by instance `instance` (world: the
     // placement its vertices were transformed by, nullptr: none), with its triangles'
     // facets and planes; returns the top-level geomID it must be attached with.
@@ -33,6 +34,8 @@ public:
 
     // Bytes of the flattened meshes' facets and planes (EmbreeAccel::facet_bytes).
     size_t record_bytes() const { return m_record_bytes; }
+    // Bytes of the instanced meshes' kept planes (add_object_mesh).
+    size_t kept_plane_bytes() const { return m_kept_plane_bytes; }
 
     // The Hit of an Embree hit record. Embree picks the triangle; where the ray meets it
     // is recomputed (refine_flat, refine), so that no reported value depends on which
@@ -99,6 +102,7 @@ private:
     // from Embree's choice of triangle").
     std::vector<std::vector<TrianglePlane>> m_planes;
     size_t m_record_bytes = 0;
+    size_t m_kept_plane_bytes = 0;
 };
 
 }  // namespace penumbra
