@@ -37,8 +37,8 @@ inline TrianglePlane make_triangle_plane(Vec3 p0, Vec3 p1, Vec3 p2) {
 // input is NaN.
 //
 // The arithmetic is that of the formulas on Vec3 (dot's (x + y) + z, no fused
-// multiply-add), done two dot products at a time in F4 lanes: the same bits in about half
-// the instructions of the scalar code, which matters because every hit EmbreeAccel reports
+// multiply-add), done two dot products at a time in F4 lanes: the same bits in two thirds
+// of the scalar code's instructions, which matters because every hit EmbreeAccel reports
 // comes through here (docs/performance.md, "Hits recomputed from Embree's choice of
 // triangle").
 inline bool triangle_plane_hit(const TrianglePlane& tp, const Ray& ray, TriangleHit* hit) {
