@@ -38,8 +38,8 @@ public:
     size_t kept_plane_bytes() const { return m_kept_plane_bytes; }
 
     // The Hit of an Embree hit record. Embree picks the triangle; where the ray meets it
-    // is recomputed (refine_flat, refine), so that no reported value depends on which
-    // code path Embree ran.
+    // is recomputed (a flattened mesh's precomputed plane, else refine), so that no
+    // reported value depends on which code path Embree ran.
     Hit hit(const Ray& ray, uint32_t inst_id, uint32_t geom_id, uint32_t prim, float u, float v,
             float t) const {
         Hit h;
