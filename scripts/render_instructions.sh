@@ -3,8 +3,10 @@
 # all it calls, Embree included), counted by valgrind's callgrind: the same count on
 # every run of an idle machine, so two builds can be compared where timing cannot
 # resolve a few percent (on a VM whose speed swings by 30% from minute to minute;
-# docs/performance.md, "How to measure"). A build running beside it raises the count by
-# about 1%: compare on an idle machine. Fewer instructions is not always less
+# docs/performance.md, "How to measure"). The renderer sizes its passes by elapsed time,
+# so the binaries run with a clock slowed 1000 times (scripts/slow_clock.c, where a C
+# compiler is found): their passes, and so their counts, do not follow the machine's
+# load. Fewer instructions is not always less
 # time: confirm a cut with scripts/ab_render_time.py. Each binary takes about 15 s at
 # the default size.
 #
@@ -29,11 +31,17 @@ fi
 [ ${#binaries[@]} -gt 0 ] || { echo "usage: $0 BINARY... [-- render ARGS]" >&2; exit 2; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+preload=()
+if cc -O2 -shared -fPIC -o "$tmp/slow_clock.so" scripts/slow_clock.c -ldl 2>/dev/null; then
+    preload=(env LD_PRELOAD="$tmp/slow_clock.so")
+else
+    echo "no C compiler: the counts follow the passes, which follow the machine's load" >&2
+fi
 first=""
 for bin in "${binaries[@]}"; do
     # The progress reporter inside the loop is left out: how often it prints depends on
     # the wall clock, so on a loaded machine its instructions would vary from run to run.
-    valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.out" \
+    "${preload[@]}" valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.out" \
         --toggle-collect='*render_samples*' --toggle-collect='*ProgressReporter::update*' \
         "$bin" "${args[@]}" -o "$tmp/out.exr" \
         --threads 1 --no-preview --overwrite >"$tmp/log" 2>&1 ||

@@ -11,9 +11,9 @@
 #include <mutex>
 #include <string>
 
-#include "core/accel/hit_refiner.h"
+#include "core/accel/embree_hit_map.h"
+#include "core/accel/flattened_instances.h"
 #include "core/error.h"
-#include "core/facet.h"
 #include "core/log.h"
 #include "core/scene/motion.h"
 
@@ -100,32 +100,12 @@ struct EmbreeAccel::Impl {
     RTCDevice device = nullptr;
     RTCScene top = nullptr;
     std::vector<RTCScene> object_scenes;  // per object; null where every placement is flat
-    // geomID within an object's scene -> Scene::meshes index.
-    std::vector<std::vector<uint32_t>> mesh_ids;
-    // instID -> object index.
-    std::vector<uint32_t> instance_object;
-    // Top-level geomIDs from instance_count on are flattened meshes, with their facets
-    // (null for a mesh whose normals move) and the planes of their world-space triangles
-    // as Embree traces them.
-    struct FlatMesh {
-        uint32_t instance, mesh;
-        const Facet* facets;
-        const TrianglePlane* planes;
-    };
-    uint32_t instance_count = 0;
-    std::vector<FlatMesh> flat_ids;
-    // Recomputes hits on instanced triangles (flattened ones use their planes below).
-    HitRefiner refiner;
-    // Some instance moves or some instanced mesh deforms: every query is filtered.
-    bool filter_every_query = false;
-    // The flattened meshes' facets: per hit on them, make_surface_point reads the world
-    // normal and the flat-shading flag instead of recomputing them (16 bytes a triangle,
-    // within EmbreeBuildOptions::flatten_budget triangles).
-    std::vector<std::vector<Facet>> facets;
-    // And their triangles' planes, for refine: 48 bytes a triangle, which save about 4%
-    // of a Cornell box's render instructions over recomputing them at every hit
-    // (docs/performance.md, "Hits recomputed from Embree's choice of triangle").
-    std::vector<std::vector<TrianglePlane>> planes;
+    EmbreeHitMap hits;
+    // Queries whose tmin is above this are filtered (needs_filter): -inf where some
+    // instance moves or some instanced mesh deforms (every query), else 0.
+    float filter_above = 0;
+    // Vertex bytes copied out of the Scene (EmbreeAccel::copied_bytes).
+    size_t copied_bytes = 0;
 
     void throw_if_error(const char* what) {
         std::lock_guard<std::mutex> lock(errors.mutex);
@@ -133,46 +113,16 @@ struct EmbreeAccel::Impl {
             throw InternalError(std::string("embree: ") + what + ": " + errors.first);
     }
 
-    // The Hit of an Embree hit record. Embree picks the triangle; where the ray meets it
-    // is recomputed here (refine), so that no reported value depends on which code path
-    // Embree ran.
-    Hit hit(const Ray& ray, unsigned inst_id, unsigned geom_id, unsigned prim, float u, float v,
-            float t) const {
-        Hit h;
-        h.t = t;
-        h.prim = prim;
-        h.b1 = u;
-        h.b2 = v;
-        if (inst_id == RTC_INVALID_GEOMETRY_ID) {
-            const FlatMesh& ids = flat_ids[geom_id - instance_count];
-            h.instance = ids.instance;
-            h.mesh = ids.mesh;
-            if (ids.facets) h.facet = ids.facets + prim;
-            TriangleHit th;
-            if (triangle_plane_hit(ids.planes[prim], ray.o, ray.d, &th)) set(th, &h);
-        } else {
-            h.instance = inst_id;
-            h.mesh = mesh_ids[instance_object[inst_id]][geom_id];
-            refine(ray, &h);
-        }
-        return h;
-    }
-    static void set(const TriangleHit& th, Hit* h) {
-        h->t = th.t;
-        h->b1 = th.b1;
-        h->b2 = th.b2;
-    }
-
-    // Embree computes t, u and v in float with approximate reciprocals (RCPPS, whose bits
-    // differ between CPU vendors) and with or without FMA, by ISA; a moving instance's
-    // transform also with approximate square roots. They are recomputed with our own
-    // arithmetic: on a flattened mesh's world-space triangle as Embree traces it (its
-    // precomputed plane), else by the refiner. Where that has no answer (a ray parallel to
-    // the triangle in float), Embree's values stay.
-    void refine(const Ray& ray, Hit* h) const {
-        TriangleHit th;
-        if (refiner.plane_hit(ray, h->instance, h->mesh, h->prim, &th)) set(th, h);
-    }
+    // The build, stage by stage (EmbreeAccel's constructor).
+    void open_device(const std::string& config);
+    RTCScene new_scene(const EmbreeBuildOptions& options) const;
+    RTCGeometry new_triangles(const TriangleMesh& mesh, const Transform* to_world);
+    void set_vertices(RTCGeometry g, unsigned slot, const std::vector<Vec3>& p,
+                      const Transform* to_world);
+    void build_object_scenes(const Scene& scene, const std::vector<bool>& flat,
+                             const EmbreeBuildOptions& options);
+    void attach_flattened(const Scene& scene, uint32_t instance);
+    void attach_instance(const Instance& inst, uint32_t instance);
 
     ~Impl() {
         if (top) rtcReleaseScene(top);
@@ -181,6 +131,8 @@ struct EmbreeAccel::Impl {
         if (device) rtcReleaseDevice(device);
     }
 };
+
+static_assert(EmbreeHitMap::kNoInstance == RTC_INVALID_GEOMETRY_ID);
 
 namespace {
 
@@ -211,199 +163,185 @@ void refined_t_filter(const RTCFilterFunctionNArguments* args) {
     for (unsigned i = 0; i < args->N; ++i) {
         if (!args->valid[i]) continue;
         const Ray& ray = q->rays[RTCRayN_id(args->ray, args->N, i)];
-        const Hit h = q->impl->hit(
+        const Hit h = q->impl->hits.hit(
             ray, RTCHitN_instID(args->hit, args->N, i, 0), RTCHitN_geomID(args->hit, args->N, i),
             RTCHitN_primID(args->hit, args->N, i), 0, 0, RTCRayN_tfar(args->ray, args->N, i));
         if (!(h.t >= ray.tmin && h.t <= ray.tmax)) args->valid[i] = 0;
     }
 }
 
-// Whether a query needs refined_t_filter.
+// Whether a query needs refined_t_filter (one comparison, as it is asked per ray).
 bool needs_filter(const EmbreeAccel::Impl& im, const Ray& ray) {
-    return im.filter_every_query || ray.tmin > 0;
-}
-
-// Which instances are traced as world-space triangles (EmbreeBuildOptions::flatten):
-// those of rigid objects whose every placement is static, small in all.
-std::vector<bool> flattened_instances(const Scene& scene, const EmbreeBuildOptions& options) {
-    std::vector<bool> flat(scene.instances.size(), false);
-    if (!options.flatten) return flat;
-    std::vector<size_t> placements(scene.objects.size(), 0);
-    std::vector<bool> rigid(scene.objects.size(), true);
-    for (const Instance& inst : scene.instances) {
-        ++placements[inst.object];
-        if (!inst.motion.empty()) rigid[inst.object] = false;
-    }
-    std::vector<bool> flat_object(scene.objects.size(), false);
-    size_t budget = options.flatten_budget;
-    for (size_t oi = 0; oi < scene.objects.size(); ++oi) {
-        size_t triangles = 0;
-        for (uint32_t mi : scene.objects[oi].meshes) {
-            if (!scene.meshes[mi].motion_positions.empty()) rigid[oi] = false;
-            triangles += scene.meshes[mi].triangle_count();
-        }
-        const size_t copies = triangles * placements[oi];
-        if (rigid[oi] && placements[oi] > 0 && copies <= options.flatten_triangles &&
-            copies <= budget) {
-            flat_object[oi] = true;
-            budget -= copies;
-        }
-    }
-    for (size_t ii = 0; ii < scene.instances.size(); ++ii)
-        flat[ii] = flat_object[scene.instances[ii].object];
-    return flat;
+    return ray.tmin > im.filter_above;
 }
 
 }  // namespace
 
-EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
-    : m_impl(std::make_unique<Impl>()) {
-    const RTCBuildQuality quality =
-        options.quality == EmbreeBuildOptions::Quality::Low    ? RTC_BUILD_QUALITY_LOW
-        : options.quality == EmbreeBuildOptions::Quality::High ? RTC_BUILD_QUALITY_HIGH
-                                                               : RTC_BUILD_QUALITY_MEDIUM;
-    // CONTEXT_FILTER_FUNCTION: queries may carry refined_t_filter.
+void EmbreeAccel::Impl::open_device(const std::string& config) {
+    device = new_device(config);
+    rtcSetDeviceErrorFunction(device, error_callback, &errors);
+    rtcSetDeviceMemoryMonitorFunction(device, memory_callback, &memory);
+}
+
+RTCScene EmbreeAccel::Impl::new_scene(const EmbreeBuildOptions& options) const {
+    RTCScene s = rtcNewScene(device);
+    // The default (Moeller-Trumbore) triangle test is not watertight: rays from inside a
+    // closed 64k-triangle sphere, aimed at its vertices and edges, missed 521 times in
+    // 6000 (tests/core/accel/bvh_accel_test.cpp, Watertight). ROBUST selects the
+    // watertight Pluecker test and conservative traversal. CONTEXT_FILTER_FUNCTION:
+    // queries may carry refined_t_filter.
     const int flags = RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION |
                       (options.compact ? RTC_SCENE_FLAG_COMPACT : 0);
-    const auto start = std::chrono::steady_clock::now();
-    Impl& im = *m_impl;
-    im.device = new_device(options.device_config);
-    rtcSetDeviceErrorFunction(im.device, error_callback, &im.errors);
-    rtcSetDeviceMemoryMonitorFunction(im.device, memory_callback, &im.memory);
+    rtcSetSceneFlags(s, RTCSceneFlags(flags));
+    rtcSetSceneBuildQuality(
+        s, options.quality == EmbreeBuildOptions::Quality::Low    ? RTC_BUILD_QUALITY_LOW
+           : options.quality == EmbreeBuildOptions::Quality::High ? RTC_BUILD_QUALITY_HIGH
+                                                                  : RTC_BUILD_QUALITY_MEDIUM);
+    return s;
+}
 
-    const std::vector<bool> flat = flattened_instances(scene, options);
+// The scene's arrays are shared, not copied, where they allow it: Embree reads the last
+// vertex with a 16-byte load (rtcSetSharedGeometryBuffer(3)), so a vertex array needs a
+// spare element of capacity (io/ reserves one). Other arrays are copied into Embree's
+// own, padded buffers.
+void EmbreeAccel::Impl::set_vertices(RTCGeometry g, unsigned slot, const std::vector<Vec3>& p,
+                                     const Transform* to_world) {
+    if (!to_world && p.capacity() > p.size()) {
+        rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, slot, RTC_FORMAT_FLOAT3, p.data(), 0,
+                                   sizeof(Vec3), p.size());
+        return;
+    }
+    auto* v = static_cast<Vec3*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, slot, RTC_FORMAT_FLOAT3, sizeof(Vec3), p.size()));
+    if (to_world) {
+        // Each vertex is off the exact image by Transform::point's rounding, the error
+        // make_surface_point already bounds for its xf.point(q).
+        for (size_t i = 0; i < p.size(); ++i) v[i] = to_world->point(p[i]);
+    } else {
+        std::memcpy(static_cast<void*>(v), p.data(), p.size() * sizeof(Vec3));
+    }
+    copied_bytes += p.size() * sizeof(Vec3);
+}
+
+// A committed triangle geometry of mesh, placed by to_world (nullptr: object space).
+RTCGeometry EmbreeAccel::Impl::new_triangles(const TriangleMesh& mesh, const Transform* to_world) {
+    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    if (mesh.motion_positions.empty()) {
+        set_vertices(g, 0, mesh.positions, to_world);
+    } else {
+        // Deformation: one vertex buffer per time step; Embree interpolates linearly
+        // between them (motion.h's position_at).
+        const auto steps = static_cast<unsigned>(mesh.motion_positions.size());
+        rtcSetGeometryTimeStepCount(g, steps);
+        for (unsigned k = 0; k < steps; ++k) set_vertices(g, k, mesh.motion_positions[k], to_world);
+    }
+    // Index loads need no padding.
+    rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.indices.data(),
+                               0, 3 * sizeof(uint32_t), mesh.triangle_count());
+    rtcCommitGeometry(g);
+    return g;
+}
+
+// Bottom level: each Object that some instance places (not flattened) once, whatever
+// the number of instances.
+void EmbreeAccel::Impl::build_object_scenes(const Scene& scene, const std::vector<bool>& flat,
+                                            const EmbreeBuildOptions& options) {
     std::vector<bool> needs_scene(scene.objects.size(), false);
     std::vector<bool> moves(scene.objects.size(), false);  // placed by a moving instance
+    // Static instanced meshes keep their triangles' planes (HitRefiner::keep_planes) within
+    // what flatten_budget leaves after the flattened copies, whose planes it also counts.
+    size_t plane_budget = options.flatten_budget;
     for (size_t ii = 0; ii < scene.instances.size(); ++ii) {
-        if (!flat[ii]) needs_scene[scene.instances[ii].object] = true;
-        if (!scene.instances[ii].motion.empty()) moves[scene.instances[ii].object] = true;
+        const uint32_t object = scene.instances[ii].object;
+        if (!flat[ii]) needs_scene[object] = true;
+        if (!scene.instances[ii].motion.empty()) moves[object] = true;
+        if (flat[ii])
+            for (uint32_t mi : scene.objects[object].meshes)
+                plane_budget -= std::min(plane_budget, scene.meshes[mi].triangle_count());
     }
-
-    // A triangle geometry of mesh, placed by to_world (nullptr: object space).
-    auto new_triangles = [&](const TriangleMesh& mesh, const Transform* to_world) {
-        RTCGeometry g = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        // The scene's arrays are shared, not copied, where they allow it: Embree reads
-        // the last vertex with a 16-byte load (rtcSetSharedGeometryBuffer(3)), so a
-        // vertex array needs a spare element of capacity (io/ reserves one). Other
-        // arrays are copied into Embree's own, padded buffers.
-        auto set_vertices = [&](unsigned slot, const std::vector<Vec3>& p) {
-            if (!to_world && p.capacity() > p.size()) {
-                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, slot, RTC_FORMAT_FLOAT3,
-                                           p.data(), 0, sizeof(Vec3), p.size());
-                return;
-            }
-            auto* v = static_cast<Vec3*>(rtcSetNewGeometryBuffer(
-                g, RTC_BUFFER_TYPE_VERTEX, slot, RTC_FORMAT_FLOAT3, sizeof(Vec3), p.size()));
-            if (to_world) {
-                // Each vertex is off the exact image by Transform::point's rounding, the
-                // error make_surface_point already bounds for its xf.point(q).
-                for (size_t i = 0; i < p.size(); ++i) v[i] = to_world->point(p[i]);
-            } else {
-                std::memcpy(static_cast<void*>(v), p.data(), p.size() * sizeof(Vec3));
-            }
-            m_copied_bytes += p.size() * sizeof(Vec3);
-        };
-        if (mesh.motion_positions.empty()) {
-            set_vertices(0, mesh.positions);
-        } else {
-            // Deformation: one vertex buffer per time step; Embree interpolates
-            // linearly between them (motion.h's position_at).
-            const auto steps = static_cast<unsigned>(mesh.motion_positions.size());
-            rtcSetGeometryTimeStepCount(g, steps);
-            for (unsigned k = 0; k < steps; ++k) set_vertices(k, mesh.motion_positions[k]);
-        }
-        // Index loads need no padding.
-        rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                   mesh.indices.data(), 0, 3 * sizeof(uint32_t),
-                                   mesh.triangle_count());
-        rtcCommitGeometry(g);
-        return g;
-    };
-
-    // Bottom level: each instanced Object once, whatever the number of instances.
-    im.object_scenes.assign(scene.objects.size(), nullptr);
-    im.mesh_ids.resize(scene.objects.size());
+    object_scenes.assign(scene.objects.size(), nullptr);
     for (size_t oi = 0; oi < scene.objects.size(); ++oi) {
         if (!needs_scene[oi]) continue;
-        RTCScene s = rtcNewScene(im.device);
-        // The default (Moeller-Trumbore) triangle test is not watertight: rays from inside
-        // a closed 64k-triangle sphere, aimed at its vertices and edges, missed 521 times
-        // in 6000 (tests/core/accel/bvh_accel_test.cpp, Watertight). ROBUST selects the
-        // watertight Pluecker test and conservative traversal.
-        rtcSetSceneFlags(s, RTCSceneFlags(flags));
-        rtcSetSceneBuildQuality(s, quality);
-        im.object_scenes[oi] = s;
+        RTCScene s = new_scene(options);
+        object_scenes[oi] = s;
         for (uint32_t mesh_index : scene.objects[oi].meshes) {
             const TriangleMesh& mesh = scene.meshes[mesh_index];
-            im.filter_every_query |= moves[oi] || !mesh.motion_positions.empty();
+            if (moves[oi] || !mesh.motion_positions.empty())
+                filter_above = -std::numeric_limits<float>::infinity();
             RTCGeometry g = new_triangles(mesh, nullptr);
             const uint32_t geom_id = rtcAttachGeometry(s, g);
             rtcReleaseGeometry(g);
-            if (im.mesh_ids[oi].size() <= geom_id) im.mesh_ids[oi].resize(geom_id + 1);
-            im.mesh_ids[oi][geom_id] = mesh_index;
+            const bool keep =
+                mesh.motion_positions.empty() && mesh.triangle_count() <= plane_budget;
+            if (keep) plane_budget -= mesh.triangle_count();
+            hits.add_object_mesh(static_cast<uint32_t>(oi), geom_id, mesh_index, keep);
         }
         rtcCommitScene(s);
-        im.throw_if_error("building an object scene");
+        throw_if_error("building an object scene");
     }
+}
 
-    // Top level: one instance per other node that places an object (geomID = instance
-    // index, Hit::instance), then the flattened meshes.
-    im.top = rtcNewScene(im.device);
-    rtcSetSceneFlags(im.top, RTCSceneFlags(flags));
-    rtcSetSceneBuildQuality(im.top, quality);
-    im.instance_count = static_cast<uint32_t>(scene.instances.size());
-    im.instance_object.resize(scene.instances.size());
-    im.refiner = HitRefiner(scene);
-    for (size_t ii = 0; ii < scene.instances.size(); ++ii) {
-        const Instance& inst = scene.instances[ii];
-        im.instance_object[ii] = inst.object;
-        if (flat[ii]) {
-            const bool identity = inst.to_world.matrix().is_identity();
-            for (uint32_t mesh_index : scene.objects[inst.object].meshes) {
-                const TriangleMesh& mesh = scene.meshes[mesh_index];
-                RTCGeometry g = new_triangles(mesh, identity ? nullptr : &inst.to_world);
-                rtcAttachGeometryByID(
-                    im.top, g, im.instance_count + static_cast<unsigned>(im.flat_ids.size()));
-                rtcReleaseGeometry(g);
-                im.facets.push_back(make_facets(mesh, inst.to_world));
-                const std::vector<Facet>& facets = im.facets.back();
-                m_facet_bytes += facets.size() * sizeof(Facet);
-                im.planes.push_back(
-                    world_triangle_planes(mesh, identity ? nullptr : &inst.to_world));
-                m_facet_bytes += im.planes.back().size() * sizeof(TrianglePlane);
-                im.flat_ids.push_back({static_cast<uint32_t>(ii), mesh_index,
-                                       facets.empty() ? nullptr : facets.data(),
-                                       im.planes.back().data()});
-            }
-            ++m_flattened;
-            continue;
-        }
-        RTCGeometry g = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_INSTANCE);
-        rtcSetGeometryInstancedScene(g, im.object_scenes[inst.object]);
-        if (inst.motion.empty()) {
-            float xfm[12];  // 3x4 column-major
-            const Mat4& m = inst.to_world.matrix();
-            for (int c = 0; c < 4; ++c)
-                for (int r = 0; r < 3; ++r) xfm[c * 3 + r] = m(r, c);
-            rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
-        } else {
-            set_transform_steps(g, inst.motion);
-        }
-        rtcCommitGeometry(g);
-        rtcAttachGeometryByID(im.top, g, static_cast<unsigned>(ii));
+// A flattened instance: its object's meshes as world-space triangles of the top level.
+void EmbreeAccel::Impl::attach_flattened(const Scene& scene, uint32_t instance) {
+    const Instance& inst = scene.instances[instance];
+    const Transform* world = inst.to_world.matrix().is_identity() ? nullptr : &inst.to_world;
+    for (uint32_t mesh_index : scene.objects[inst.object].meshes) {
+        RTCGeometry g = new_triangles(scene.meshes[mesh_index], world);
+        rtcAttachGeometryByID(top, g, hits.add_flat_mesh(instance, mesh_index, world));
         rtcReleaseGeometry(g);
+    }
+}
+
+// Any other instance: an instance geometry of its object's scene, geomID = instance
+// index (Hit::instance).
+void EmbreeAccel::Impl::attach_instance(const Instance& inst, uint32_t instance) {
+    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(g, object_scenes[inst.object]);
+    if (inst.motion.empty()) {
+        float xfm[12];  // 3x4 column-major
+        const Mat4& m = inst.to_world.matrix();
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 3; ++r) xfm[c * 3 + r] = m(r, c);
+        rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+    } else {
+        set_transform_steps(g, inst.motion);
+    }
+    rtcCommitGeometry(g);
+    rtcAttachGeometryByID(top, g, instance);
+    rtcReleaseGeometry(g);
+}
+
+EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
+    : m_impl(std::make_unique<Impl>()) {
+    const auto start = std::chrono::steady_clock::now();
+    Impl& im = *m_impl;
+    im.open_device(options.device_config);
+    im.hits = EmbreeHitMap(scene);
+    const std::vector<bool> flat = flattened_instances(scene, options);
+    im.build_object_scenes(scene, flat, options);
+    // Top level: the instances (geomID = instance index), then the flattened meshes.
+    im.top = im.new_scene(options);
+    for (uint32_t ii = 0; ii < scene.instances.size(); ++ii) {
+        if (flat[ii]) {
+            im.attach_flattened(scene, ii);
+            ++m_flattened;
+        } else {
+            im.attach_instance(scene.instances[ii], ii);
+        }
     }
     rtcCommitScene(im.top);
     im.throw_if_error("building the top-level scene");
 
+    m_copied_bytes = im.copied_bytes;
+    m_facet_bytes = im.hits.record_bytes();
     m_stats.name = "embree";
     m_stats.build_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     m_stats.object_scenes = static_cast<size_t>(std::count_if(
         im.object_scenes.begin(), im.object_scenes.end(), [](RTCScene s) { return s != nullptr; }));
     m_stats.instances = scene.instances.size() - m_flattened;
-    m_stats.memory_bytes =
-        static_cast<size_t>(std::max<int64_t>(0, im.memory.load())) + m_facet_bytes;
+    m_stats.memory_bytes = static_cast<size_t>(std::max<int64_t>(0, im.memory.load())) +
+                           m_facet_bytes + im.hits.kept_plane_bytes();
 }
 
 EmbreeAccel::~EmbreeAccel() = default;
@@ -436,28 +374,40 @@ std::optional<Hit> EmbreeAccel::do_intersect(const Ray& ray) const {
 // the query is then asked again with the filter, which rejects that candidate, so a
 // reported hit always lies in the ray's interval by our t.
 std::optional<Hit> EmbreeAccel::closest_hit(const Ray& ray, bool filtered) const {
-    QueryContext ctx;
-    init_context(&ctx, &ray, m_impl.get());
-    if (filtered) ctx.embree.filter = refined_t_filter;
     RTCRayHit rh;
     fill_ray(ray, rh.ray);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(m_impl->top, &ctx.embree, &rh);
+    if (filtered) {
+        QueryContext ctx;
+        init_context(&ctx, &ray, m_impl.get());
+        ctx.embree.filter = refined_t_filter;
+        rtcIntersect1(m_impl->top, &ctx.embree, &rh);
+    } else {
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        rtcIntersect1(m_impl->top, &ctx, &rh);
+    }
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    const Hit h = m_impl->hit(ray, rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, rh.hit.u,
-                              rh.hit.v, rh.ray.tfar);
+    const Hit h = m_impl->hits.hit(ray, rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, rh.hit.u,
+                                   rh.hit.v, rh.ray.tfar);
     if (!filtered && !(h.t >= ray.tmin && h.t <= ray.tmax)) return closest_hit(ray, true);
     return h;
 }
 
 bool EmbreeAccel::do_occluded(const Ray& ray) const {
-    QueryContext ctx;
-    init_context(&ctx, &ray, m_impl.get());
-    if (needs_filter(*m_impl, ray)) ctx.embree.filter = refined_t_filter;
     RTCRay r;
     fill_ray(ray, r);
-    rtcOccluded1(m_impl->top, &ctx.embree, &r);
+    if (needs_filter(*m_impl, ray)) {
+        QueryContext ctx;
+        init_context(&ctx, &ray, m_impl.get());
+        ctx.embree.filter = refined_t_filter;
+        rtcOccluded1(m_impl->top, &ctx.embree, &r);
+    } else {
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        rtcOccluded1(m_impl->top, &ctx, &r);
+    }
     return r.tfar == -std::numeric_limits<float>::infinity();
 }
 
@@ -495,8 +445,8 @@ void EmbreeAccel::intersect8(const Ray (&rays)[8], std::optional<Hit> (&hits)[8]
             hits[i].reset();
             continue;
         }
-        const Hit h = m_impl->hit(rays[i], rh.hit.instID[0][i], rh.hit.geomID[i], rh.hit.primID[i],
-                                  rh.hit.u[i], rh.hit.v[i], rh.ray.tfar[i]);
+        const Hit h = m_impl->hits.hit(rays[i], rh.hit.instID[0][i], rh.hit.geomID[i],
+                                       rh.hit.primID[i], rh.hit.u[i], rh.hit.v[i], rh.ray.tfar[i]);
         if (!ctx.embree.filter && !(h.t >= rays[i].tmin && h.t <= rays[i].tmax))
             hits[i] = closest_hit(rays[i], true);  // as in closest_hit
         else

@@ -48,7 +48,7 @@ public:
     // (EmbreeBuildOptions::flatten); stats().instances counts the others.
     size_t flattened() const { return m_flattened; }
     // Bytes of the flattened triangles' precomputed facets (core/facet.h: 16 per triangle
-    // and placement), which their hits point to, and planes (triangle_intersect.h: 48),
+    // and placement), which their hits point to, and planes (triangle_plane.h: 48),
     // which refine their hits; bounded by flatten_budget triangles.
     size_t facet_bytes() const { return m_facet_bytes; }
     // Eight closest-hit queries as one rtcIntersect8 packet (hits[i] empty: a miss or an

@@ -2,7 +2,7 @@
 
 namespace penumbra {
 
-HitRefiner::HitRefiner(const Scene& scene) : m_scene(&scene) {
+HitRefiner::HitRefiner(const Scene& scene) : m_scene(&scene), m_planes(scene.meshes.size()) {
     m_placements.resize(scene.instances.size());
     for (size_t i = 0; i < scene.instances.size(); ++i) {
         const Instance& inst = scene.instances[i];
@@ -18,19 +18,34 @@ HitRefiner::HitRefiner(const Scene& scene) : m_scene(&scene) {
 
 bool HitRefiner::plane_hit(const Ray& ray, uint32_t instance, uint32_t mesh_index, uint32_t prim,
                            TriangleHit* hit) const {
-    const TriangleMesh& mesh = m_scene->meshes[mesh_index];
-    const uint32_t* idx = &mesh.indices[3 * size_t(prim)];
-    Vec3 p[3];
-    if (mesh.motion_positions.empty()) {
-        for (int k = 0; k < 3; ++k) p[k] = mesh.positions[idx[k]];
+    const std::vector<TrianglePlane>& kept = m_planes[mesh_index];
+    TrianglePlane plane;
+    if (!kept.empty()) {
+        plane = kept[prim];
     } else {
-        for (int k = 0; k < 3; ++k) p[k] = position_at(mesh, idx[k], ray.time);
+        const TriangleMesh& mesh = m_scene->meshes[mesh_index];
+        const uint32_t* idx = &mesh.indices[3 * size_t(prim)];
+        Vec3 p[3];
+        if (mesh.motion_positions.empty()) {
+            for (int k = 0; k < 3; ++k) p[k] = mesh.positions[idx[k]];
+        } else {
+            for (int k = 0; k < 3; ++k) p[k] = position_at(mesh, idx[k], ray.time);
+        }
+        plane = make_triangle_plane(p[0], p[1], p[2]);
     }
     const Placement& pl = m_placements[instance];
-    if (pl.identity) return triangle_plane_hit(ray.o, ray.d, p[0], p[1], p[2], hit);
+    if (pl.identity) return triangle_plane_hit(plane, ray, hit);
     const Ray oray = pl.motion == kStatic ? transform_ray(pl.to_object, ray)
                                           : moving_object_ray(m_motion[pl.motion], ray);
-    return triangle_plane_hit(oray.o, oray.d, p[0], p[1], p[2], hit);
+    return triangle_plane_hit(plane, oray, hit);
+}
+
+size_t HitRefiner::keep_planes(uint32_t mesh_index) {
+    const TriangleMesh& mesh = m_scene->meshes[mesh_index];
+    std::vector<TrianglePlane>& kept = m_planes[mesh_index];
+    if (!mesh.motion_positions.empty() || !kept.empty()) return 0;
+    kept = world_triangle_planes(mesh, nullptr);
+    return kept.size() * sizeof(TrianglePlane);
 }
 
 std::vector<TrianglePlane> world_triangle_planes(const TriangleMesh& mesh,

@@ -2,14 +2,15 @@
 // with our own arithmetic: t and the barycentrics of a hit then do not depend on which
 // instruction set, CPU vendor or approximate reciprocal the traversal used. The ray is
 // mapped into the instance's object space as BvhAccel maps it (instance_transform.h),
-// a deforming triangle taken at the ray's time, and triangle_plane_hit does the rest.
+// a deforming triangle taken at the ray's time, and triangle_plane_hit (triangle_plane.h)
+// does the rest.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "core/accel/instance_transform.h"
-#include "core/accel/triangle_intersect.h"
+#include "core/accel/triangle_plane.h"
 #include "core/scene/scene.h"
 
 namespace penumbra {
@@ -25,6 +26,11 @@ public:
     bool plane_hit(const Ray& ray, uint32_t instance, uint32_t mesh, uint32_t prim,
                    TriangleHit* hit) const;
 
+    // Precomputes the object-space planes of Scene mesh `mesh` (48 bytes a triangle), which
+    // its hits then read instead of building each from the vertices: the same planes, so
+    // the same bits. Returns their bytes: 0 for a deforming mesh or one already kept.
+    size_t keep_planes(uint32_t mesh);
+
 private:
     static constexpr uint32_t kStatic = ~0u;
     struct Placement {
@@ -35,6 +41,7 @@ private:
     const Scene* m_scene = nullptr;
     std::vector<Placement> m_placements;  // per Scene instance
     std::vector<std::vector<QuatDecomposition>> m_motion;
+    std::vector<std::vector<TrianglePlane>> m_planes;  // per Scene mesh; empty: not kept
 };
 
 // The planes of a static mesh's triangles placed by to_world (nullptr: as they are),

@@ -27,6 +27,8 @@ struct F4 {
     F4(float x) : v(_mm_set1_ps(x)) {}  // NOLINT: broadcasts, as the scalar formulas read
     // Four floats at p, 16-byte aligned.
     static F4 load(const float* p) { return F4(_mm_load_ps(p)); }
+    // Four floats at p, any alignment (a Vec3 followed by another float: lanes 0-2).
+    static F4 loadu(const float* p) { return F4(_mm_loadu_ps(p)); }
     void store(float* p) const { _mm_store_ps(p, v); }
     // A Vec3 in lanes 0-2 (lane 3 is 0), read as 8 + 4 bytes: never past its end.
     static F4 load3(const Vec3& a) {
@@ -38,6 +40,7 @@ struct F4 {
                 _mm_cvtss_f32(_mm_movehl_ps(v, v))};
     }
     float lane0() const { return _mm_cvtss_f32(v); }
+    float lane1() const { return _mm_cvtss_f32(_mm_shuffle_ps(v, v, 1)); }
     // Lane i in all four.
     template <int i>
     F4 broadcast() const {
@@ -63,6 +66,13 @@ inline F4 clear_bits(F4 a, const uint32_t* mask) {
     return F4(_mm_andnot_ps(_mm_load_ps(reinterpret_cast<const float*>(mask)), a.v));
 }
 inline F4 abs4(F4 a) { return F4(_mm_andnot_ps(_mm_set1_ps(-0.0f), a.v)); }
+// Lane 0: (a0 + a1) + a2, lane 1: (b0 + b1) + b2, the sums dot() forms, so two dot
+// products come from their lane-wise products in five instructions; lanes 2-3 unspecified.
+inline F4 sum3_pair(F4 a, F4 b) {
+    const __m128 lo = _mm_unpacklo_ps(a.v, b.v);  // a0 b0 a1 b1
+    const __m128 hi = _mm_unpackhi_ps(a.v, b.v);  // a2 b2 a3 b3
+    return F4(_mm_add_ps(_mm_add_ps(lo, _mm_movehl_ps(lo, lo)), hi));
+}
 #else
 struct F4 {
     float v[4];
@@ -70,10 +80,12 @@ struct F4 {
     F4(float x) : v{x, x, x, x} {}  // NOLINT: broadcasts, as the scalar formulas read
     F4(float a, float b, float c, float d) : v{a, b, c, d} {}
     static F4 load(const float* p) { return {p[0], p[1], p[2], p[3]}; }
+    static F4 loadu(const float* p) { return {p[0], p[1], p[2], p[3]}; }
     void store(float* p) const { std::copy(v, v + 4, p); }
     static F4 load3(const Vec3& a) { return {a.x, a.y, a.z, 0.0f}; }
     Vec3 xyz() const { return {v[0], v[1], v[2]}; }
     float lane0() const { return v[0]; }
+    float lane1() const { return v[1]; }
     template <int i>
     F4 broadcast() const {
         return F4(v[i]);
@@ -128,6 +140,9 @@ inline F4 clear_bits(F4 a, const uint32_t* mask) {
 }
 inline F4 abs4(F4 a) {
     return lanes(a, a, [](float x, float) { return std::abs(x); });
+}
+inline F4 sum3_pair(F4 a, F4 b) {
+    return {(a.v[0] + a.v[1]) + a.v[2], (b.v[0] + b.v[1]) + b.v[2], 0.0f, 0.0f};
 }
 #endif
 

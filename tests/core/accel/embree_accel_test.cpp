@@ -7,11 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "study/accel_check.h"
 #include "core/accel/triangle_intersect.h"
+#include "core/accel/triangle_plane.h"
 #include "core/facet.h"
 #include "core/sampling/rng.h"
 #include "core/sampling/warp.h"
+#include "study/accel_check.h"
 #include "support/accel_agreement.h"
 #include "support/scene_builder.h"
 #include "support/surface_point_checks.h"
