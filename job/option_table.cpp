@@ -43,7 +43,8 @@ struct Meta {
 };
 
 constexpr bool kPixels = true, kNotPixels = false;
-constexpr OptionScope kImage = OptionScope::Image, kRender = OptionScope::Render;
+constexpr OptionScope kImage = OptionScope::Image, kRender = OptionScope::Render,
+                      kFarm = OptionScope::Farm;
 
 OptionDecl declare(const Meta& m, OptionKind kind) {
     OptionDecl d;
@@ -97,6 +98,7 @@ T parse_number(const std::string& text) {
 
 std::string range_text(double lo, double hi, bool lo_open) {
     std::ostringstream s;
+    s.precision(15);  // whole bounds print whole: [1, 16777216]
     if (hi == kInf) {
         s << (lo_open ? "above " : "at least ") << lo;
     } else {
@@ -358,10 +360,10 @@ void add_batch_options(std::vector<OptionDecl>& t) {
     t.push_back(flag({"no-preview", "", "", kNotPixels, kRender,
                       "Do not write the sRGB PNG preview"},
                      FIELD(no_preview)));
-    t.push_back(number<int>({"bands", "bands", "", kNotPixels, kRender,
+    t.push_back(number<int>({"bands", "bands", "", kNotPixels, kFarm,
                              "penumbra farm: row bands per image, one farm task each"},
                             FIELD(bands), 1, 1 << 15));
-    t.push_back(number<int>({"frames-per-task", "frames_per_task", "", kNotPixels, kRender,
+    t.push_back(number<int>({"frames-per-task", "frames_per_task", "", kNotPixels, kFarm,
                              "penumbra farm: consecutive frames of an entry rendered by one "
                              "task"},
                             FIELD(frames_per_task), 1, 1 << 20));
@@ -565,9 +567,10 @@ void add_scene_light_options(std::vector<OptionDecl>& t) {
         FIELD(default_light),
         {{"auto", DefaultLightMode::Auto}, {"on", DefaultLightMode::On},
          {"off", DefaultLightMode::Off}}));
-    OptionDecl no_default = flag({"no-default-light", "", "", kNotPixels, kImage,
-                                  "Same as --default-light off"},
-                                 FIELD(no_file_lights));
+    // A spelling of --default-light off: the fingerprint and header see that option.
+    OptionDecl no_default = declare({"no-default-light", "", "", kPixels, kImage,
+                                     "Same as --default-light off"},
+                                    OptionKind::Flag);
     no_default.get = [](const RenderCommandOptions& o) {
         return std::string(o.default_light == DefaultLightMode::Off ? "1" : "0");
     };
@@ -608,7 +611,7 @@ void add_sampling_options(std::vector<OptionDecl>& t) {
                                 "below this, e.g. 0.02; --spp is then the most a pixel takes. "
                                 "Adds the Error and Samples layers",
                                 Header::WhenPositive},
-                               FIELD(target_error), 0, kInf));
+                               FIELD(target_error), 0, kInf, true));
     OptionDecl min_spp = number<unsigned>(
         {"adaptive-min-spp", "adaptive_min_spp", "penumbra:adaptive_min_spp", kPixels, kImage,
          "Adaptive sampling: samples every pixel takes first (0: 16 / E^0.3, at least 8, as "

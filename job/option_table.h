@@ -26,13 +26,14 @@ enum class OptionKind {
     Numbers,  // `count` real numbers (command line: separate words; job file: an array)
 };
 
-// Which commands take it: every image option is also a `converge --config` option.
-enum class OptionScope { Image, Render };
+// Which commands take it: every image option is also a `converge --config` option; farm
+// options are job-file keys only (`render` renders whole images).
+enum class OptionScope { Image, Render, Farm };
 
 struct OptionDecl {
-    std::string flag;        // "clamp-indirect" is --clamp-indirect
+    std::string flag;        // "max-depth" is --max-depth
     std::string short_flag;  // "o" is -o; empty: none
-    std::string job_key;     // empty: not a job-file key
+    std::string job_key;     // "max_depth"; empty: not a job-file key
     std::string header_key;  // empty: not echoed in the EXR header
     bool pixels = false;     // decides pixels: part of the checkpoint fingerprint
     OptionScope scope = OptionScope::Image;

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Instructions that penumbra binaries execute inside the render loop (render_samples and
-# all it calls, Embree included), counted by valgrind's callgrind: the same count on
+# all it calls, Embree included; the toggle names the function exactly, since a pattern
+# would also flip collection off again in the lambdas and templates named after it), counted by valgrind's callgrind: the same count on
 # every run of an idle machine, so two builds can be compared where timing cannot
 # resolve a few percent (on a VM whose speed swings by 30% from minute to minute;
 # docs/performance.md, "How to measure"). The renderer sizes its passes by elapsed time,
@@ -42,7 +43,7 @@ for bin in "${binaries[@]}"; do
     # The progress reporter inside the loop is left out: how often it prints depends on
     # the wall clock, so on a loaded machine its instructions would vary from run to run.
     "${preload[@]}" valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.out" \
-        --toggle-collect='*render_samples*' --toggle-collect='*ProgressReporter::update*' \
+        --toggle-collect='penumbra::render_samples(*' --toggle-collect='*ProgressReporter::update*' \
         "$bin" "${args[@]}" -o "$tmp/out.exr" \
         --threads 1 --no-preview --overwrite >"$tmp/log" 2>&1 ||
         { cat "$tmp/log" >&2; exit 1; }

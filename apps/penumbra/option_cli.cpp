@@ -69,7 +69,7 @@ void add_declared_options(CLI::App* cmd, RenderCommandOptions& o,
 }
 
 bool is_image_option(const OptionDecl& d) { return d.scope == OptionScope::Image; }
-bool is_render_option(const OptionDecl&) { return true; }
+bool is_render_option(const OptionDecl& d) { return d.scope != OptionScope::Farm; }
 
 bool is_timeline_option(const OptionDecl& d) {
     return d.scope == OptionScope::Image && (d.timing || d.flag == "fps" || d.flag == "shutter");

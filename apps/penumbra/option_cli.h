@@ -16,7 +16,7 @@ void add_declared_options(CLI::App* cmd, RenderCommandOptions& o,
 
 // The image options (render and converge's --config).
 bool is_image_option(const OptionDecl& d);
-// Every option of `penumbra render`.
+// Every option of `penumbra render` (all but the farm's job-file keys).
 bool is_render_option(const OptionDecl& d);
 // The animation time or interval of an image: --time, --shutter-open, --shutter-close,
 // --frame, --fps, --shutter.

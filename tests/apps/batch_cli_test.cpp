@@ -216,12 +216,12 @@ TEST(BatchCli, JobFileSetsColourAndExrOutputPerEntry) {
     ASSERT_GE(aces.channelindex("R"), 0);
     EXPECT_EQ(aces.channelformats.at(size_t(aces.channelindex("R"))), OIIO::TypeDesc::HALF);
 
-    // A bad value is an error naming the entry, before anything renders.
+    // A bad value is an error naming the entry and its key, before anything renders.
     const std::string bad = dir.write("bad.json", R"({"jobs": [{"scene": ")" + kCornell +
                                                       R"(", "aov": "albedo,colour"}]})");
     const test::CliResult e = run_penumbra({"render", "--job", bad, "--no-preview"});
     EXPECT_EQ(e.status, 1);
-    EXPECT_NE(e.output.find("bad.json: jobs[0]: "), std::string::npos) << e.output;
+    EXPECT_NE(e.output.find("bad.json: jobs[0].aov: "), std::string::npos) << e.output;
     EXPECT_NE(e.output.find("colour"), std::string::npos) << e.output;
 }
 

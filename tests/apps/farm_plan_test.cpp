@@ -74,7 +74,7 @@ TEST(FarmPlan, BadBandsAreNamed) {
         load_farm_plan(job, 300);
         FAIL() << "bands 0 accepted";
     } catch (const SceneError& e) {
-        EXPECT_NE(std::string(e.what()).find("jobs[0].bands: expected an integer in [1, 4096]"),
+        EXPECT_NE(std::string(e.what()).find("jobs[0].bands: 0 is not in [1, 32768]"),
                   std::string::npos)
             << e.what();
     }

@@ -22,7 +22,7 @@ std::string other_value(const OptionDecl& d, const RenderCommandOptions& o) {
         case OptionKind::Number: candidates = {"2", "3", "0.5", "1", "7", "0", "-1"}; break;
         case OptionKind::Numbers: candidates = {d.count == 2 ? "1 2" : "1 2 3"}; break;
         case OptionKind::Text:
-        case OptionKind::Path: candidates = {"1-3", "probe"}; break;
+        case OptionKind::Path: candidates = {"1-3", "albedo", "probe"}; break;
     }
     for (const std::string& c : candidates) {
         RenderCommandOptions p = o;
