@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "core/film/aov.h"
+#include "job/aov_list.h"
 #include "job/job_file.h"
 
 namespace penumbra {

@@ -22,6 +22,7 @@
 #include "io/image/image_reader.h"
 #include "io/color/scene_color.h"
 #include "materials/material.h"
+#include "job/aov_list.h"
 
 namespace penumbra {
 

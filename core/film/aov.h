@@ -23,7 +23,7 @@ enum class Aov : uint32_t {
     // of its samples (core/film/error_estimate.h). Not a pure observer: asking for it
     // draws odd sample indices from a second sample stream, so it is not part of "all".
     Error = 64,
-    // Not an AOV of its own, and parse_aovs does not name it: the denoiser's input
+    // Not an AOV of its own, and --aov does not name it (job/aov_list.h): the denoiser's input
     // (Film::denoise_input). The film keeps the guide features' sums and the beauty's
     // squares, over all samples and over the odd-indexed ones; like Error, it draws the
     // odd sample indices from a second sample stream.
@@ -50,13 +50,6 @@ public:
 private:
     uint32_t m_bits = 0;
 };
-
-// "albedo,normal,depth,position,variance,samples,error" (any subset, any order; "all"
-// for every one but error, which changes the sample streams). Throws
-// std::invalid_argument naming an unknown entry.
-AovSet parse_aovs(const std::string& list);
-// The names parse_aovs accepts, in Aov order.
-const std::vector<std::string>& aov_names();
 
 // The denoiser's guide features of one camera sample (core/denoise/denoise_input.h): the
 // first non-specular surface's albedo, tinted by the specular surfaces on the way, its

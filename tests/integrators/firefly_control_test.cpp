@@ -10,6 +10,7 @@
 #include "integrators/render.h"
 #include "support/accel_scenes.h"
 #include "support/scene_builder.h"
+#include "job/aov_list.h"
 
 namespace penumbra {
 namespace {

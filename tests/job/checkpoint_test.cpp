@@ -12,6 +12,7 @@
 #include <random>
 
 #include "support/gltf_builder.h"
+#include "job/aov_list.h"
 
 namespace penumbra {
 namespace {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/film/film.h"
+#include "job/aov_list.h"
 
 namespace penumbra {
 namespace {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/film/film.h"
+#include "job/aov_list.h"
 
 namespace penumbra {
 namespace {

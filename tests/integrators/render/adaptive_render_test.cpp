@@ -13,6 +13,7 @@
 #include "integrators/render.h"
 #include "io/gltf/gltf_loader.h"
 #include "support/accel_scenes.h"
+#include "job/aov_list.h"
 
 namespace penumbra {
 namespace {

@@ -8,6 +8,7 @@
 #include "core/camera/perspective_camera.h"
 #include "integrators/render.h"
 #include "support/scene_builder.h"
+#include "job/aov_list.h"
 
 namespace penumbra {
 namespace {

@@ -11,6 +11,7 @@
 #include "job/checkpoint.h"
 #include "support/gltf_builder.h"
 #include "support/scene_builder.h"
+#include "job/aov_list.h"
 
 namespace penumbra {
 namespace {

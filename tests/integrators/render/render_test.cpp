@@ -12,6 +12,7 @@
 #include "core/lights/point_light.h"
 #include "support/scene_builder.h"
 #include "support/option_names.h"
+#include "job/aov_list.h"
 
 namespace penumbra {
 namespace {

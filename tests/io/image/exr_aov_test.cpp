@@ -15,6 +15,7 @@
 #include "io/image/render_writer.h"
 #include "support/gltf_builder.h"
 #include "support/scene_builder.h"
+#include "job/aov_list.h"
 
 namespace penumbra {
 namespace {

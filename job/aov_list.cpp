@@ -1,4 +1,4 @@
-#include "core/film/aov.h"
+#include "job/aov_list.h"
 
 #include <stdexcept>
 
