@@ -31,9 +31,9 @@ enum class OptionKind {
 enum class OptionScope { Image, Render, Farm };
 
 struct OptionDecl {
-    std::string flag;        // "max-depth" is --max-depth
+    std::string flag;        // "time-limit" is --time-limit
     std::string short_flag;  // "o" is -o; empty: none
-    std::string job_key;     // "max_depth"; empty: not a job-file key
+    std::string job_key;     // "time_limit"; empty: not a job-file key
     std::string header_key;  // empty: not echoed in the EXR header
     bool pixels = false;     // decides pixels: part of the checkpoint fingerprint
     OptionScope scope = OptionScope::Image;
@@ -59,7 +59,7 @@ struct OptionDecl {
 };
 
 const std::vector<OptionDecl>& render_option_table();
-// By flag ("max-depth") or job key ("max_depth"); nullptr when there is none.
+// By flag ("time-limit") or job key ("time_limit"); nullptr when there is none.
 const OptionDecl* find_option(const std::string& flag_or_key);
 // The declared option; throws std::logic_error when there is none (a programming error).
 const OptionDecl& render_option(const std::string& flag);
