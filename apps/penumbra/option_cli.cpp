@@ -1,5 +1,7 @@
 #include "apps/penumbra/option_cli.h"
 
+#include <CLI/CLI.hpp>
+
 #include <stdexcept>
 #include <string>
 #include <vector>

@@ -1,5 +1,7 @@
 #include "apps/penumbra/render_command.h"
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>

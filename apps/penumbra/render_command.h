@@ -5,9 +5,11 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "job/render_options.h"
+
+namespace CLI {
+class App;  // CLI/CLI.hpp, which only the .cpp files that build commands include
+}
 
 namespace penumbra {
 

@@ -6,8 +6,6 @@
 #include <memory>
 #include <string>
 
-#include <CLI/CLI.hpp>
-
 #include "apps/penumbra/render_command.h"
 #include "core/accel/accel.h"
 #include "core/camera/camera.h"

@@ -1,5 +1,7 @@
 #include "apps/penumbra/farm/farm_command.h"
 
+#include <CLI/CLI.hpp>
+
 #include <sched.h>
 #include <unistd.h>
 

@@ -3,8 +3,11 @@
 // assembly of bands and the batch summary once all tasks ended (merge).
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
+
+namespace CLI {
+class App;  // CLI/CLI.hpp, which only the .cpp files that build commands include
+}
 
 namespace penumbra {
 

@@ -2,6 +2,8 @@
 
 #include "apps/penumbra/option_cli.h"
 
+#include <CLI/CLI.hpp>
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>

@@ -3,11 +3,14 @@
 // speed, and optionally renders with each one and compares the images.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
 #include "job/render_options.h"
+
+namespace CLI {
+class App;  // CLI/CLI.hpp, which only the .cpp files that build commands include
+}
 
 namespace penumbra {
 

@@ -1,5 +1,7 @@
 #include "apps/penumbra/study/converge_command.h"
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

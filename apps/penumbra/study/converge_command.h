@@ -10,9 +10,11 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "apps/penumbra/render_command.h"
+
+namespace CLI {
+class App;  // CLI/CLI.hpp, which only the .cpp files that build commands include
+}
 
 namespace penumbra {
 
