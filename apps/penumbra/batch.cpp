@@ -7,13 +7,8 @@
 #include <stdexcept>
 
 #include "apps/penumbra/denoise_step.h"
-#include "core/accel/accel.h"
 #include "core/error.h"
-#include "core/film/aov.h"
-#include "core/film/filter.h"
 #include "core/progress.h"
-#include "core/sampling/sampler.h"
-#include "integrators/integrator.h"
 #include "io/image/image_writer.h"
 #include "job/job_file.h"
 #include "job/option_table.h"
