@@ -265,15 +265,25 @@ template <bool kBare>
     return surface_point_on<false>(mesh, xf, ray, hit);
 }
 
-}  // namespace
-
-SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
+// The hit's point with its mesh's material.
+[[gnu::always_inline]] inline SurfacePoint placed_surface_point(const Scene& scene,
+                                                               const Ray& ray, const Hit& hit) {
     const Instance& inst = scene.instances[hit.instance];
     const TriangleMesh& mesh = scene.meshes[hit.mesh];
     if (!inst.motion.empty()) return moving_surface_point(mesh, inst, ray, hit);
     if (hit.facet && (hit.facet->flags & Facet::kBare))
         return surface_point_on<true>(mesh, inst.to_world, ray, hit);
     return static_surface_point(mesh, inst.to_world, ray, hit);
+}
+
+}  // namespace
+
+SurfacePoint make_surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
+    SurfacePoint sp = placed_surface_point(scene, ray, hit);
+    // Animated materials and instances hidden for part of the shutter: the material at
+    // the ray's time.
+    if (scene.timed_materials) sp.material = scene.timed_material(hit.instance, sp.material, ray.time);
+    return sp;
 }
 
 Vec3 smooth_surface_point(Vec3 p, const Vec3 v[3], const Vec3 n[3], const float b[3]) {

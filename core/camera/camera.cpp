@@ -3,11 +3,23 @@
 #include "core/camera/moving_camera.h"
 #include "core/camera/orthographic_camera.h"
 #include "core/camera/perspective_camera.h"
+#include "core/camera/stepped_camera.h"
 #include "core/camera/thin_lens_camera.h"
 
 namespace penumbra {
 
 std::unique_ptr<Camera> make_camera(const CameraDesc& desc, int width, int height) {
+    if (!desc.view_steps.empty()) {
+        // One camera per field of view, each with the whole motion.
+        std::vector<std::unique_ptr<Camera>> steps;
+        for (float view : desc.view_steps) {
+            CameraDesc step = desc;
+            step.view_steps.clear();
+            (desc.type == ProjectionType::Orthographic ? step.ymag : step.yfov) = view;
+            steps.push_back(make_camera(step, width, height));
+        }
+        return std::make_unique<SteppedCamera>(std::move(steps));
+    }
     if (!desc.motion.empty()) {
         // The same camera in its own frame, moved per sample.
         CameraDesc local = desc;

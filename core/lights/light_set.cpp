@@ -10,6 +10,21 @@ namespace penumbra {
 
 namespace {
 constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
+
+// A material's mean emitted radiance, for the power estimate; for one that changes
+// within the shutter, averaged over its time steps.
+Spectrum mean_emission(const Scene& scene, int material) {
+    auto of = [&](int index) {
+        const MaterialDesc& m = scene.material(index);
+        return m.emissive * m.emissive_strength * mean_emission_texture(scene, m);
+    };
+    if (material < 0 || size_t(material) >= scene.material_steps.size() ||
+        scene.material_steps[size_t(material)].empty())
+        return of(material);
+    Spectrum sum(0);
+    for (int step : scene.material_steps[size_t(material)]) sum += of(step);
+    return sum / float(scene.material_steps[size_t(material)].size());
+}
 }  // namespace
 
 LightSet::LightSet(const Scene& scene, std::unique_ptr<EnvironmentLight> environment,
@@ -17,9 +32,7 @@ LightSet::LightSet(const Scene& scene, std::unique_ptr<EnvironmentLight> environ
     : m_environment(std::move(environment)), m_type(options.sampler) {
     // Mean emission per material, computed once (textures can be large).
     std::vector<std::optional<Spectrum>> mean_Le(scene.materials.size() + 1);
-    auto emissive = [&](uint32_t mi) {
-        return scene.material(scene.meshes[mi].material).is_emissive();
-    };
+    auto emissive = [&](uint32_t mi) { return scene.may_emit(scene.meshes[mi].material); };
     size_t count = 0;
     for (const Instance& inst : scene.instances)
         for (uint32_t mi : scene.objects[inst.object].meshes)
@@ -32,12 +45,10 @@ LightSet::LightSet(const Scene& scene, std::unique_ptr<EnvironmentLight> environ
         for (uint32_t mi : obj.meshes) {
             if (!emissive(mi)) continue;
             const TriangleMesh& mesh = scene.meshes[mi];
-            const MaterialDesc& mat = scene.material(mesh.material);
             // Emitters that move within the shutter are sampled where they are at the
             // ray's time (TriangleLight::placed).
             auto& mean = mean_Le[mesh.material + 1];
-            if (!mean)
-                mean = mat.emissive * mat.emissive_strength * mean_emission_texture(scene, mat);
+            if (!mean) mean = mean_emission(scene, mesh.material);
             m_emissive_meshes.emplace_back(mi, static_cast<uint32_t>(m_triangles.size()));
             for (uint32_t p = 0; p < mesh.triangle_count(); ++p)
                 m_triangles.emplace_back(scene, ii, mi, p, *mean, options.triangles);

@@ -35,6 +35,7 @@ TriangleLight::TriangleLight(const Scene& scene, uint32_t instance, uint32_t mes
     m_Le = mat.emissive * mat.emissive_strength;  // as emitted_radiance starts
     m_textured = mat.emissive_texture.valid() && !is_black(m_Le);
     m_covered = mat.alpha_mode != AlphaMode::Opaque;
+    m_timed = scene.material_varies(instance, m_material);
     m_area = m_static.area;
     // Power only chooses among lights: any positive estimate keeps sampling unbiased,
     // so a moving triangle is weighed by its size at shutter open. A Lambertian emitter
@@ -81,10 +82,19 @@ float TriangleLight::solid_angle_pdf(Vec3 ref, Vec3 p, const Placed& t) const {
     return area_pdf(d, dist2, std::sqrt(dist2), t);
 }
 
-Spectrum TriangleLight::Le_at(float b0, float b1, float b2) const {
-    if (!m_textured && !m_covered) return m_Le;
+Spectrum TriangleLight::Le_at(float b0, float b1, float b2, float time) const {
+    if (!m_textured && !m_covered && !m_timed) return m_Le;
     const Vec2 uv0 = m_uv0[0] * b0 + m_uv0[1] * b1 + m_uv0[2] * b2;
     const Vec2 uv1 = m_uv1[0] * b0 + m_uv1[1] * b1 + m_uv1[2] * b2;
+    if (m_timed) {
+        // The material at the sample's time, as make_surface_point gives a hit there.
+        const MaterialDesc& m =
+            m_scene->material(m_scene->material_at(m_instance, m_material, time));
+        const float alpha =
+            m_vertex_alpha[0] * b0 + m_vertex_alpha[1] * b1 + m_vertex_alpha[2] * b2;
+        return emitted_radiance(*m_scene, m, uv0, uv1) *
+               material_coverage(*m_scene, m, uv0, uv1, alpha);
+    }
     const MaterialDesc& m = m_scene->material(m_material);
     const Spectrum Le = m_textured ? emitted_radiance(*m_scene, m, uv0, uv1) : m_Le;
     if (!m_covered) return Le;
@@ -164,7 +174,7 @@ std::optional<LightSample> TriangleLight::sample_Li(const ShadingPoint& ref, Vec
     // Area sampling's density from the distance just found, not a second pass over p.
     if (!(omega > 0)) pdf = area_pdf(d, dist2, dist, t);
     if (!(pdf > 0) || !std::isfinite(pdf)) return std::nullopt;
-    const Spectrum Le = Le_at(b0, b1, b2);
+    const Spectrum Le = Le_at(b0, b1, b2, time);
     if (is_black(Le)) return std::nullopt;
     return LightSample{d / dist, dist, Le, pdf, false, p};
 }

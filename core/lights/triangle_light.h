@@ -60,9 +60,10 @@ private:
     float area_pdf(Vec3 d, float dist2, float dist, const Placed& t) const;
     // emits_towards(material, n, w) with the material's doubleSided kept here.
     bool emits_to(Vec3 n, Vec3 w) const { return m_two_sided || dot(n, w) > 0; }
-    // Emitted radiance at barycentrics (b1, b2), times the material's coverage there: an
-    // emitter with alpha sends as much light as a camera path sees of it.
-    Spectrum Le_at(float b0, float b1, float b2) const;
+    // Emitted radiance at barycentrics (b1, b2) and normalized shutter time `time`, times
+    // the material's coverage there: an emitter with alpha sends as much light as a
+    // camera path sees of it.
+    Spectrum Le_at(float b0, float b1, float b2, float time) const;
     // The solid angle of t at ref when sample_Li samples it spherically there, else 0.
     float spherical_solid_angle(Vec3 ref, const Placed& t) const;
     // The density of sample_Li choosing point p of t from ref (either strategy).
@@ -80,6 +81,7 @@ private:
     // looked up through the material per sample.
     bool m_textured;
     bool m_covered;  // alphaMode MASK or BLEND: Le_at weighs by the coverage
+    bool m_timed;    // the material changes within the shutter (Scene::material_at)
     float m_vertex_alpha[3];  // COLOR_0's alpha (1 without)
     Spectrum m_Le;
     float m_area;

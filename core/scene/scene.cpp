@@ -1,5 +1,8 @@
 #include "core/scene/scene.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/scene/motion.h"
 
 namespace penumbra {
@@ -26,6 +29,32 @@ size_t Scene::triangle_count() const {
 const MaterialDesc& Scene::default_material() {
     static const MaterialDesc material;
     return material;
+}
+
+int Scene::timed_material(uint32_t instance, int material, float time) const {
+    if (instance < instances.size() && !instances[instance].visibility.constant() &&
+        !instances[instance].visibility.at(time))
+        return hidden_material;
+    if (material < 0 || size_t(material) >= material_steps.size()) return material;
+    const std::vector<int>& steps = material_steps[size_t(material)];
+    if (steps.empty()) return material;
+    const float k = std::round(std::clamp(time, 0.0f, 1.0f) * float(steps.size() - 1));
+    return steps[size_t(k)];
+}
+
+bool Scene::may_emit(int m) const {
+    if (material(m).is_emissive()) return true;
+    if (m < 0 || size_t(m) >= material_steps.size()) return false;
+    for (int step : material_steps[size_t(m)])
+        if (material(step).is_emissive()) return true;
+    return false;
+}
+
+bool Scene::material_varies(uint32_t instance, int material) const {
+    if (!timed_materials) return false;
+    if (instance < instances.size() && !instances[instance].visibility.constant()) return true;
+    return material >= 0 && size_t(material) < material_steps.size() &&
+           !material_steps[size_t(material)].empty();
 }
 
 }  // namespace penumbra

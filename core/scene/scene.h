@@ -45,6 +45,23 @@ struct Object {
     Bounds3 bounds;                // object space
 };
 
+// KHR_node_visibility over the shutter: visible at shutter open or not, and the
+// normalized shutter times at which that flips (a STEP curve's keys), increasing.
+struct TimedVisibility {
+    bool at_open = true;
+    std::vector<float> flips;
+
+    bool constant() const { return flips.empty(); }
+    bool at(float time) const {
+        bool v = at_open;
+        for (float f : flips) {
+            if (time < f) break;
+            v = !v;
+        }
+        return v;
+    }
+};
+
 // A node that references an object, with its flattened world transform.
 struct Instance {
     uint32_t object = 0;
@@ -56,6 +73,8 @@ struct Instance {
     // time steps Embree receives (as quaternion decompositions, so rotations do not
     // shrink objects). core/scene/motion.h interpolates them at a ray's time.
     std::vector<Transform> motion;
+    // Shown for part of the shutter only (an instance hidden throughout is not made).
+    TimedVisibility visibility;
 };
 
 enum class ProjectionType { Perspective, Orthographic };
@@ -73,6 +92,10 @@ struct CameraDesc {
     // Camera motion, as Instance::motion: empty when the camera does not move within
     // the shutter.
     std::vector<Transform> motion;
+    // A field of view animated within the shutter (KHR_animation_pointer): yfov
+    // (perspective) or ymag (orthographic) at K >= 2 normalized shutter times
+    // k / (K - 1), the nearest taken per sample; empty otherwise.
+    std::vector<float> view_steps;
     int node = -1;
     // Thin lens (perspective only). aperture_radius 0 is a pinhole. From the file's
     // EXT_cameras_sensor / camera extras when present, else overridden on the command line.
@@ -98,6 +121,16 @@ struct Scene {
     // u in [0, 1] is the instant shutter_open + u * (shutter_close - shutter_open).
     // Equal for a still (the default: both 0, the scene as its nodes place it).
     double shutter_open = 0, shutter_close = 0;
+    // Materials that change within the shutter (KHR_animation_pointer): material_steps[m]
+    // lists K >= 2 material indices, material m at normalized shutter times k / (K - 1),
+    // and a hit at time u takes the nearest (the composite trapezoid rule over the
+    // shutter). Empty, or empty for m, where nothing changes.
+    std::vector<std::vector<int>> material_steps;
+    // The material of an instance's hits while it is hidden: no coverage (MASK with an
+    // infinite cutoff), so rays pass through as through a cut-out; -1 when unused.
+    int hidden_material = -1;
+    // Whether a hit's material depends on its time (either of the above).
+    bool timed_materials = false;
 
     // World-space bounds of all instances, over the whole shutter for moving ones.
     Bounds3 bounds() const;
@@ -109,6 +142,16 @@ struct Scene {
         return index >= 0 ? materials[size_t(index)] : default_material();
     }
     static const MaterialDesc& default_material();  // glTF's, for primitives without one
+    // The material index a hit on `instance` with mesh material `material` uses at
+    // normalized shutter time `time`; `material` itself unless timed_materials.
+    int material_at(uint32_t instance, int material, float time) const {
+        return timed_materials ? timed_material(instance, material, time) : material;
+    }
+    int timed_material(uint32_t instance, int material, float time) const;
+    // Whether `material` emits at some time in the shutter.
+    bool may_emit(int material) const;
+    // Whether material_at can give `material` another index on `instance`.
+    bool material_varies(uint32_t instance, int material) const;
 };
 
 }  // namespace penumbra

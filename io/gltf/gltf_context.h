@@ -5,6 +5,7 @@
 
 #include <tiny_gltf.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -73,9 +74,17 @@ class MeshChecks;
 void load_meshes(const GltfContext& ctx, Scene& scene, std::vector<MeshOrigin>& origins,
                  MeshChecks& checks);
 
+class GltfAnimations;
+struct Shutter;
+
 // Materials, and the textures and images they use, decoded with OIIO
-// (gltf_material.cpp). Only images that a material references are decoded.
-void load_materials(const GltfContext& ctx, Scene& scene);
+// (gltf_material.cpp). Only images that a material references are decoded. Materials
+// animated through KHR_animation_pointer take their values at shutter open, with time
+// steps where they change within the shutter (Scene::material_steps). `animations` is
+// called once the file's own materials are read, so that their messages come before the
+// animations' (which it parses).
+void load_materials(const GltfContext& ctx, const std::function<const GltfAnimations&()>& animations,
+                    const Shutter& shutter, Scene& scene);
 
 class NodeMotion;
 

@@ -14,15 +14,15 @@
 #include <optional>
 
 #include "core/log.h"
-#include "io/gltf/gltf_animation.h"
+#include "io/gltf/animation/gltf_animation.h"
 #include "io/gltf/compression/gltf_compression.h"
 #include "io/gltf/gltf_context.h"
 #include "io/gltf/gltf_parse.h"
-#include "io/gltf/gltf_deform.h"
+#include "io/gltf/animation/gltf_deform.h"
 #include "io/gltf/gltf_mesh_checks.h"
-#include "io/gltf/gltf_node_motion.h"
+#include "io/gltf/animation/gltf_node_motion.h"
 #include "io/gltf/gltf_signature.h"
-#include "io/gltf/gltf_skin_weights.h"
+#include "io/gltf/animation/gltf_skin_weights.h"
 #include "io/gltf/gltf_variants.h"
 #include "io/color/scene_color.h"
 
@@ -108,13 +108,19 @@ Scene load_gltf(const std::string& path, const GltfLoadOptions& options, GltfLoa
     MeshChecks mesh_checks(ctx);
     load_meshes(ctx, scene, origins, mesh_checks);
     st.meshes = clock.lap();
-    load_materials(ctx, scene);
+    // Parsed once the materials are read (their messages first); animated materials
+    // read their values from them.
+    std::optional<GltfAnimations> parsed;
+    auto animations = [&]() -> const GltfAnimations& {
+        if (!parsed) parsed.emplace(ctx);
+        return *parsed;
+    };
+    load_materials(ctx, animations, shutter, scene);
     // The images are decoded: their encoded bytes (from URIs) are not needed any more.
     for (tinygltf::Image& image : model.images) std::vector<unsigned char>().swap(image.image);
     convert_scene_colors(scene, options.rec709_to_working);
     st.materials = clock.lap();
-    const GltfAnimations animations(ctx);
-    const NodeMotion motion(ctx, animations, shutter);
+    const NodeMotion motion(ctx, animations(), shutter);
     const int scene_index = choose_scene(ctx, options.scene);
     if (scene_index >= 0)
         load_nodes(ctx, scene_index, motion, origins, scene);

@@ -1,7 +1,10 @@
 // The chosen glTF scene's node tree to Instances, CameraDescs and KHR_lights_punctual
 // lights, each with its flattened world transform (parent * local), and for those that
 // move within the shutter, their world transforms at its time steps (gltf_node_motion.h).
-// Lights take their pose at shutter open.
+// KHR_node_visibility leaves out what is hidden throughout the shutter and times what is
+// hidden for part of it; lights and cameras take their KHR_animation_pointer values
+// (gltf_property_animation.h). A light that changes or moves within the shutter is a
+// SteppedLight.
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -11,11 +14,14 @@
 #include "core/lights/directional_light.h"
 #include "core/lights/point_light.h"
 #include "core/lights/spot_light.h"
+#include "core/lights/stepped_light.h"
 #include "core/camera/thin_lens_camera.h"
 #include "io/gltf/gltf_context.h"
-#include "io/gltf/gltf_deform.h"
+#include "io/gltf/animation/gltf_deform.h"
 #include "io/gltf/gltf_instancing.h"
-#include "io/gltf/gltf_node_motion.h"
+#include "io/gltf/animation/gltf_node_motion.h"
+#include "io/gltf/animation/gltf_node_visibility.h"
+#include "io/gltf/animation/gltf_property_animation.h"
 
 namespace penumbra {
 
@@ -26,7 +32,8 @@ namespace {
 struct LightNode {
     int light;
     int node;
-    Transform to_world;
+    Transform to_world;  // at shutter open
+    bool moves = false;  // within the shutter
 };
 
 bool all_finite(const std::vector<double>& v) {
@@ -115,9 +122,9 @@ void read_lens(const GltfContext& ctx, const std::string& el, const tinygltf::Ca
         c.aperture_radius = aperture_radius_from_fstop(fstop, c.yfov, c.sensor_height_mm);
 }
 
-CameraDesc make_camera(const GltfContext& ctx, int index, const tinygltf::Node& node,
-                       const Transform& world) {
-    const tinygltf::Camera& gc = ctx.model.cameras[size_t(index)];
+// Camera `index` as `gc` describes it (the file's, or a copy with animated values).
+CameraDesc make_camera(const GltfContext& ctx, int index, const tinygltf::Camera& gc,
+                       const tinygltf::Node& node, const Transform& world) {
     const std::string el = element("cameras", size_t(index));
     CameraDesc c;
     c.name = !gc.name.empty() ? gc.name : !node.name.empty() ? node.name : el;
@@ -164,8 +171,8 @@ int node_light(const GltfContext& ctx, const std::string& el, const tinygltf::No
 // KHR_lights_punctual: intensity in candela (point, spot) or lux (directional), times
 // colour, to W/sr or W/m^2 as ctx.light_units says (core/lights/light_units.h). `range`
 // is ignored: we keep the physical inverse-square falloff everywhere.
-std::unique_ptr<Light> make_light(const GltfContext& ctx, const LightNode& ln, float scene_radius) {
-    const tinygltf::Light& gl = ctx.model.lights[size_t(ln.light)];
+std::unique_ptr<Light> make_light(const GltfContext& ctx, const tinygltf::Light& gl,
+                                  const LightNode& ln, float scene_radius) {
     const std::string el = "extensions.KHR_lights_punctual." + element("lights", size_t(ln.light));
     Spectrum color(1, 1, 1);
     if (!gl.color.empty()) {
@@ -193,6 +200,102 @@ std::unique_ptr<Light> make_light(const GltfContext& ctx, const LightNode& ln, f
                                            float(outer));
     }
     ctx.fail(el, "type '" + gl.type + "' is not point, spot or directional");
+}
+
+// The instances of node `index`'s mesh: one, or EXT_mesh_gpu_instancing's, or a skinned
+// copy in world space; shown for part of the shutter where `vis` flips.
+void add_node_mesh(const GltfContext& ctx, const NodeMotion& motion, int index,
+                   const Transform& world, const std::vector<Transform>& steps,
+                   const TimedVisibility& vis, const std::vector<MeshOrigin>& origins,
+                   Scene& scene, std::vector<std::string>& instanced_skinned) {
+    const tinygltf::Node& node = ctx.model.nodes[size_t(index)];
+    const std::string el = element("nodes", size_t(index));
+    ctx.check_index(el, "mesh", node.mesh, ctx.model.meshes.size(), "meshes");
+    const size_t first = scene.instances.size();
+    const std::optional<DeformedObject> deformed =
+        scene.objects[size_t(node.mesh)].meshes.empty()
+            ? std::nullopt
+            : add_deformed_object(ctx, motion, index, origins, scene);
+    // A skinned mesh is already in world space; its node's transform and motion are
+    // ignored. EXT_mesh_gpu_instancing defines no instance transform for it.
+    const bool world_space = deformed && deformed->world_space;
+    if (world_space && node.extensions.count("EXT_mesh_gpu_instancing"))
+        instanced_skinned.push_back(el);
+    const uint32_t object = deformed ? deformed->object : uint32_t(node.mesh);
+    if (!scene.objects[size_t(node.mesh)].meshes.empty() &&
+        (world_space || !add_gpu_instances(ctx, el, node, index, object, world, steps, scene))) {
+        Instance inst;
+        inst.object = object;
+        inst.to_world = world_space ? Transform() : world;
+        if (!world_space) inst.motion = steps;
+        inst.node = index;
+        inst.name = node.name.empty() ? el : node.name;
+        scene.instances.push_back(std::move(inst));
+    }
+    if (vis.constant() || scene.instances.size() == first) return;
+    for (size_t i = first; i < scene.instances.size(); ++i) scene.instances[i].visibility = vis;
+    if (scene.hidden_material < 0) {
+        MaterialDesc hidden;
+        hidden.name = "hidden (KHR_node_visibility)";
+        hidden.alpha_mode = AlphaMode::Mask;
+        hidden.alpha_cutoff = INFINITY;
+        scene.hidden_material = int(scene.materials.size());
+        scene.materials.push_back(hidden);
+    }
+    scene.timed_materials = true;
+}
+
+// The light of `ln` over the shutter: its animated values and visibility at shutter
+// open, or a SteppedLight where they change or the node moves within the shutter; nullptr
+// when it is hidden throughout.
+std::unique_ptr<Light> make_scene_light(const GltfContext& ctx, const NodeMotion& motion,
+                                        const NodeVisibility& visibility, const LightNode& ln,
+                                        float scene_radius) {
+    const tinygltf::Light& file = ctx.model.lights[size_t(ln.light)];
+    const std::vector<PropertyChannel> channels =
+        usable_channels(ctx, "extensions/KHR_lights_punctual/" + element("lights", size_t(ln.light)),
+                        file, motion.animations().properties(PointerObject::Light, ln.light));
+    const Shutter& s = motion.shutter();
+    const TimedVisibility vis = visibility.over_shutter(ln.node);
+    if (!changes_within(channels, s) && vis.constant() && !ln.moves)
+        return vis.at_open ? make_light(ctx, animated(file, channels, s.open), ln, scene_radius)
+                           : nullptr;
+    std::vector<std::unique_ptr<Light>> steps;
+    bool any = false;
+    for (int k = 0; k < kPropertySteps; ++k) {
+        const double t = s.time(k, kPropertySteps);
+        if (!vis.at(float(k) / float(kPropertySteps - 1))) {
+            steps.push_back(nullptr);
+            continue;
+        }
+        LightNode step = ln;
+        if (ln.moves) step.to_world = Transform(motion.world(ln.node, t));
+        steps.push_back(make_light(ctx, animated(file, channels, t), step, scene_radius));
+        any = true;
+    }
+    return any ? std::make_unique<SteppedLight>(std::move(steps)) : nullptr;
+}
+
+// The camera of node `index` with its animated values at shutter open, and its field of
+// view per time step where that changes within the shutter.
+CameraDesc make_scene_camera(const GltfContext& ctx, const NodeMotion& motion, int index,
+                             const Transform& world, const std::vector<Transform>& steps) {
+    const tinygltf::Node& node = ctx.model.nodes[size_t(index)];
+    const tinygltf::Camera& file = ctx.model.cameras[size_t(node.camera)];
+    const std::vector<PropertyChannel> channels =
+        usable_channels(ctx, element("cameras", size_t(node.camera)), file,
+                        motion.animations().properties(PointerObject::Camera, node.camera));
+    const Shutter& s = motion.shutter();
+    CameraDesc c = make_camera(ctx, node.camera, animated(file, channels, s.open), node, world);
+    if (changes_within(channels, s))
+        for (int k = 0; k < kPropertySteps; ++k) {
+            const CameraDesc at = make_camera(
+                ctx, node.camera, animated(file, channels, s.time(k, kPropertySteps)), node, world);
+            c.view_steps.push_back(c.type == ProjectionType::Orthographic ? at.ymag : at.yfov);
+        }
+    for (const Transform& step : steps) c.motion.push_back(rigid(step));
+    c.node = index;
+    return c;
 }
 
 // glTF 2.0, section 3.7.3.1: a skin's joints and skeleton root belong to the scene that
@@ -260,6 +363,7 @@ void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motio
                 const std::vector<MeshOrigin>& origins, Scene& scene) {
     const tinygltf::Model& m = ctx.model;
     const std::string sel = element("scenes", size_t(scene_index));
+    const NodeVisibility visibility(ctx, motion);
     std::vector<bool> visited(m.nodes.size(), false);
     std::vector<LightNode> lights;
     // Renderable but surprising: one summary warning per kind, after the tree.
@@ -298,39 +402,16 @@ void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motio
             singular.push_back(el);
             continue;
         }
-        if (node.mesh != -1) {
-            ctx.check_index(el, "mesh", node.mesh, m.meshes.size(), "meshes");
-            const std::optional<DeformedObject> deformed =
-                scene.objects[size_t(node.mesh)].meshes.empty()
-                    ? std::nullopt
-                    : add_deformed_object(ctx, motion, index, origins, scene);
-            // A skinned mesh is already in world space; its node's transform and motion are
-            // ignored. EXT_mesh_gpu_instancing defines no instance transform for it.
-            const bool world_space = deformed && deformed->world_space;
-            if (world_space && node.extensions.count("EXT_mesh_gpu_instancing"))
-                instanced_skinned.push_back(el);
-            const uint32_t object = deformed ? deformed->object : uint32_t(node.mesh);
-            if (!scene.objects[size_t(node.mesh)].meshes.empty() &&
-                (world_space ||
-                 !add_gpu_instances(ctx, el, node, index, object, world, steps, scene))) {
-                Instance inst;
-                inst.object = object;
-                inst.to_world = world_space ? Transform() : world;
-                if (!world_space) inst.motion = steps;
-                inst.node = index;
-                inst.name = node.name.empty() ? el : node.name;
-                scene.instances.push_back(std::move(inst));
-            }
-        }
+        const TimedVisibility vis = visibility.over_shutter(index);
+        const bool shown = vis.at_open || !vis.constant();
+        if (node.mesh != -1 && shown)
+            add_node_mesh(ctx, motion, index, world, steps, vis, origins, scene, instanced_skinned);
         if (node.camera != -1) {
             ctx.check_index(el, "camera", node.camera, m.cameras.size(), "cameras");
-            CameraDesc c = make_camera(ctx, node.camera, node, world);
-            for (const Transform& step : steps) c.motion.push_back(rigid(step));
-            c.node = index;
-            scene.cameras.push_back(std::move(c));
+            scene.cameras.push_back(make_scene_camera(ctx, motion, index, world, steps));
         }
         const int light = node_light(ctx, el, node);
-        if (light >= 0) lights.push_back({light, index, world});
+        if (light >= 0 && shown) lights.push_back({light, index, world, !steps.empty()});
         for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) {
             ctx.check_index(el, "child node", *it, m.nodes.size(), "nodes");
             stack.emplace_back(*it, world);
@@ -351,7 +432,9 @@ void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motio
 
     const Bounds3 bounds = scene.bounds();
     const float radius = bounds.empty() ? 1.0f : std::max(1.0f, 0.5f * length(bounds.diagonal()));
-    for (const LightNode& ln : lights) scene.lights.push_back(make_light(ctx, ln, radius));
+    for (const LightNode& ln : lights)
+        if (std::unique_ptr<Light> light = make_scene_light(ctx, motion, visibility, ln, radius))
+            scene.lights.push_back(std::move(light));
 }
 
 }  // namespace penumbra

@@ -2,7 +2,9 @@
 // (gltf_compression.h), tinygltf's messages logged on one line.
 #include "io/gltf/gltf_parse.h"
 
+#include <algorithm>
 #include <cstring>
+#include <iterator>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +13,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "io/gltf/compression/gltf_compression.h"
+#include "io/gltf/animation/gltf_pointer_channels.h"
 #include "io/gltf/gltf_signature.h"
 
 namespace penumbra {
@@ -19,6 +22,7 @@ namespace {
 
 // Extensions whose meaning we implement.
 const char* const kSupportedExtensions[] = {
+    "KHR_animation_pointer",
     "KHR_draco_mesh_compression",
     "KHR_lights_punctual",
     "KHR_materials_anisotropy",
@@ -36,6 +40,7 @@ const char* const kSupportedExtensions[] = {
     "KHR_materials_variants",
     "KHR_materials_volume",
     "KHR_mesh_quantization",
+    "KHR_node_visibility",
     "KHR_meshopt_compression",
     "KHR_texture_basisu",
     "KHR_texture_transform",
@@ -182,6 +187,17 @@ tinygltf::Model parse_gltf(const std::string& path, bool strict) {
     } catch (const std::exception& e) {
         // tinygltf throws on some malformed input (e.g. an empty data: URI).
         throw SceneError(path + ": " + one_line(e.what()));
+    }
+    if (ok && std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(),
+                        "KHR_animation_pointer") != model.extensionsUsed.end()) {
+        std::string bytes;
+        if (compressed) {
+            bytes = compressed->bytes;
+        } else {
+            std::ifstream in(path, std::ios::binary);
+            bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        }
+        restore_pointer_channels(model, bytes, binary, path, warn, err);
     }
     drop_data_uri_warnings(model, warn);
     log_lines(path, warn, strict);

@@ -9,6 +9,7 @@
 #include "io/gltf/material/gltf_material_extensions.h"
 #include "io/gltf/material/gltf_material_json.h"
 #include "io/gltf/material/gltf_material_textures.h"
+#include "io/gltf/animation/gltf_property_animation.h"
 
 namespace penumbra {
 
@@ -59,8 +60,9 @@ void load_specular_glossiness(const GltfContext& ctx, const tinygltf::Material& 
     d.metallic_roughness_texture = {};
 }
 
-MaterialDesc load_material(const GltfContext& ctx, size_t i, TextureTable& textures) {
-    const tinygltf::Material& gm = ctx.model.materials[i];
+// Material i of the file, read from `gm`: the file's own, or a copy with animated values.
+MaterialDesc load_material(const GltfContext& ctx, const tinygltf::Material& gm, size_t i,
+                           TextureTable& textures) {
     const std::string el = element("materials", i);
     MaterialDesc d;
     d.name = gm.name.empty() ? el : gm.name;
@@ -126,9 +128,30 @@ MaterialDesc load_material(const GltfContext& ctx, size_t i, TextureTable& textu
     return d;
 }
 
+
+// KHR_animation_pointer: material i as animated at shutter open and, where it changes
+// within the shutter, kPropertySteps copies across it, appended to the scene's materials
+// (Scene::material_steps).
+void load_animated_material(const GltfContext& ctx, size_t i, const GltfAnimations& animations,
+                            const Shutter& shutter, TextureTable& textures, Scene& scene) {
+    const tinygltf::Material& gm = ctx.model.materials[i];
+    const std::vector<PropertyChannel> channels = usable_channels(
+        ctx, element("materials", i), gm, animations.properties(PointerObject::Material, int(i)));
+    scene.materials[i] = load_material(ctx, animated(gm, channels, shutter.open), i, textures);
+    if (!changes_within(channels, shutter)) return;
+    scene.material_steps.resize(ctx.model.materials.size());
+    for (int k = 0; k < kPropertySteps; ++k) {
+        scene.material_steps[i].push_back(int(scene.materials.size()));
+        scene.materials.push_back(load_material(
+            ctx, animated(gm, channels, shutter.time(k, kPropertySteps)), i, textures));
+    }
+    scene.timed_materials = true;
+}
+
 }  // namespace
 
-void load_materials(const GltfContext& ctx, Scene& scene) {
+void load_materials(const GltfContext& ctx, const std::function<const GltfAnimations&()>& animations,
+                    const Shutter& shutter, Scene& scene) {
     // Decoding texture images is most of a textured scene's load time, so they decode in
     // parallel: a silent dry run over the materials (into a scratch scene) lists them in
     // use order, then the real pass takes them. An error stops the dry run; the real pass
@@ -140,14 +163,19 @@ void load_materials(const GltfContext& ctx, Scene& scene) {
         Scene scratch;
         TextureTable collect(dry, scratch, &prefetch);
         try {
-            for (size_t i = 0; i < ctx.model.materials.size(); ++i) load_material(dry, i, collect);
+            for (size_t i = 0; i < ctx.model.materials.size(); ++i)
+                load_material(dry, ctx.model.materials[i], i, collect);
         } catch (const std::exception&) {
         }
     }
     prefetch.decode_all();
     TextureTable textures(ctx, scene, &prefetch);
     for (size_t i = 0; i < ctx.model.materials.size(); ++i)
-        scene.materials.push_back(load_material(ctx, i, textures));
+        scene.materials.push_back(load_material(ctx, ctx.model.materials[i], i, textures));
+    const GltfAnimations& animated = animations();
+    for (size_t i = 0; i < ctx.model.materials.size(); ++i)
+        if (!animated.properties(PointerObject::Material, int(i)).empty())
+            load_animated_material(ctx, i, animated, shutter, textures, scene);
 }
 
 }  // namespace penumbra

@@ -2,7 +2,7 @@
 // glTF 2.0 Appendix C: BoxAnimated (Khronos) for LINEAR translation and slerp, and small
 // synthetic files for STEP, CUBICSPLINE (tangents scaled by the key interval), the
 // shortest-path slerp and morph weights.
-#include "io/gltf/gltf_animation.h"
+#include "io/gltf/animation/gltf_animation.h"
 
 #include <gtest/gtest.h>
 

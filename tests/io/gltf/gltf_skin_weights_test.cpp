@@ -9,7 +9,7 @@
 
 #include "core/error.h"
 #include "io/gltf/gltf_loader.h"
-#include "io/gltf/gltf_skin_weights.h"
+#include "io/gltf/animation/gltf_skin_weights.h"
 #include "support/gltf_builder.h"
 
 namespace penumbra {

@@ -50,9 +50,11 @@ TEST(GltfSummaryWarnings, FoxOverlappingAnimationsAreOneWarning) {
     EXPECT_EQ(strict_error(path).rfind(path + ": animations: 42 node properties", 0), 0u);
 }
 
-// KHR_animation_pointer channels (path "pointer") name no node property we animate.
-// (Debian's tinygltf drops channels without a node itself, with its own warning per
-// channel, which the loader counts: ParserWarningsAreCountedPerKind.)
+// Channels with path "pointer" but no KHR_animation_pointer pointer (the file does not
+// use the extension) target nothing. (Debian's tinygltf drops channels without a node
+// itself, with its own warning per channel, which the loader counts:
+// ParserWarningsAreCountedPerKind; gltf_pointer_channels.cpp restores them for files that
+// use the extension.)
 TEST(GltfSummaryWarnings, ChannelsWithoutTargetNodeAreOneWarning) {
     const test::ScratchDir dir;
     test::GltfBuilder b;

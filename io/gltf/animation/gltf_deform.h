@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "io/gltf/gltf_context.h"
-#include "io/gltf/gltf_node_motion.h"
+#include "io/gltf/animation/gltf_node_motion.h"
 
 namespace penumbra {
 

@@ -1,4 +1,4 @@
-#include "io/gltf/gltf_skin_weights.h"
+#include "io/gltf/animation/gltf_skin_weights.h"
 
 #include <cmath>
 #include <set>

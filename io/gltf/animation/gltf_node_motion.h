@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/math/transform.h"
-#include "io/gltf/gltf_animation.h"
+#include "io/gltf/animation/gltf_animation.h"
 #include "io/gltf/gltf_context.h"
 
 namespace penumbra {

@@ -1,21 +1,25 @@
-#include "io/gltf/gltf_animation.h"
+#include "io/gltf/animation/gltf_animation.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <map>
+#include <optional>
 #include <set>
+#include <tuple>
 
 #include "io/gltf/gltf_accessor.h"
 #include "io/gltf/gltf_context.h"
 #include "io/gltf/gltf_parse.h"
+#include "io/gltf/animation/gltf_pointer.h"
 #include "core/math/portable_math.h"
 
 namespace penumbra {
 
 namespace {
 
-enum class Path { Translation, Rotation, Scale, Weights };
+// What a channel drives: a node's transform, morph weights or visibility (through
+// KHR_animation_pointer), or another object's property (PropertyChannel).
+enum class Path { Translation, Rotation, Scale, Weights, Visible, Property };
 
 // Spherical linear interpolation along the shorter arc, glTF 2.0 Appendix C:
 // a = acos(|q0.q1|), q = sin(a(1-s))/sin(a) q0 + sign(q0.q1) sin(a s)/sin(a) q1.
@@ -47,7 +51,8 @@ void normalize4(double* q) {
 }
 
 const char* path_name(Path p) {
-    static const char* const names[] = {"translation", "rotation", "scale", "weights"};
+    static const char* const names[] = {"translation", "rotation", "scale",
+                                        "weights",     "visible",  "property"};
     return names[int(p)];
 }
 
@@ -66,9 +71,16 @@ size_t target_count(const GltfContext& ctx, const tinygltf::Node& node) {
     return mesh.primitives.empty() ? 0 : mesh.primitives[0].targets.size();
 }
 
-// Reads sampler `s` of animation `a` as a curve of `path` for `node`, checking the
-// accessors against glTF 2.0, section 5.7 (animation.sampler) and Appendix C.
-AnimationCurve read_curve(const GltfContext& ctx, size_t a, int s, Path path, int node) {
+bool is_integer(const tinygltf::Accessor& a) {
+    return a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT &&
+           a.componentType != TINYGLTF_COMPONENT_TYPE_DOUBLE;
+}
+
+// Reads sampler `s` of animation `a` as a curve of `path` for `node` (for a Property,
+// `width` numbers per key), checking the accessors against glTF 2.0, section 5.7
+// (animation.sampler) and Appendix C, and KHR_animation_pointer's type rules.
+AnimationCurve read_curve(const GltfContext& ctx, size_t a, int s, Path path, int node,
+                          size_t width = 0) {
     const tinygltf::AnimationSampler& sampler = ctx.model.animations[a].samplers[size_t(s)];
     const std::string el = element("animations", a) + "." + element("samplers", size_t(s));
     AnimationCurve c;
@@ -122,6 +134,26 @@ AnimationCurve read_curve(const GltfContext& ctx, size_t a, int s, Path path, in
                              "; weights expects SCALAR of float or of normalized byte or short");
         c.width = target_count(ctx, ctx.model.nodes[size_t(node)]);
         break;
+    case Path::Visible:
+        // KHR_animation_pointer: a bool is SCALAR unsigned byte, 0 false, and only STEP.
+        if (out.type != TINYGLTF_TYPE_SCALAR ||
+            out.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || out.normalized)
+            ctx.fail(el, out_desc + "; visible (a bool) expects SCALAR of unsigned byte");
+        if (c.interpolation != Interpolation::Step)
+            ctx.fail(el, "visible (a bool) must be animated with STEP interpolation");
+        c.width = 1;
+        break;
+    case Path::Property: {
+        // Floats come as float or as integers, normalized or not (converted as the
+        // accessor says), the type holding `width` numbers.
+        static const int types[] = {TINYGLTF_TYPE_SCALAR, TINYGLTF_TYPE_SCALAR,
+                                    TINYGLTF_TYPE_VEC2, TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4};
+        const char* names[] = {"", "SCALAR", "VEC2", "VEC3", "VEC4"};
+        if (out.type != types[width] || !(is_float || is_integer(out)))
+            ctx.fail(el, out_desc + "; the property expects " + names[width] + " of numbers");
+        c.width = width;
+        break;
+    }
     }
     const size_t per_key = c.interpolation == Interpolation::CubicSpline ? 3 : 1;
     const size_t expected = c.times.size() * per_key * (path == Path::Weights ? c.width : 1);
@@ -207,78 +239,164 @@ Transform NodePose::transform() const {
                           Vec3(float(s[0]), float(s[1]), float(s[2])));
 }
 
+namespace {
+
+// One channel's target: a node path, or an object's property (Path::Property).
+struct Target {
+    PointerObject object = PointerObject::Node;
+    int index = -1;
+    Path path = Path::Property;
+    std::string property;  // Path::Property: the pointer below the object
+    size_t width = 0;
+    size_t curve = 0, animation = 0;
+    std::string channel;  // "animations[a].channels[c]"
+};
+
+Path node_path(const std::string& name) {
+    if (name == "translation") return Path::Translation;
+    if (name == "rotation") return Path::Rotation;
+    if (name == "scale") return Path::Scale;
+    if (name == "weights") return Path::Weights;
+    return Path::Visible;  // "extensions/KHR_node_visibility/visible"
+}
+
+// Checks a KHR_animation_pointer target's index against its array.
+void check_pointer_index(const GltfContext& ctx, const std::string& el, const Target& t) {
+    const tinygltf::Model& m = ctx.model;
+    switch (t.object) {
+    case PointerObject::Node:
+        return ctx.check_index(el, "pointer's node", t.index, m.nodes.size(), "nodes");
+    case PointerObject::Material:
+        return ctx.check_index(el, "pointer's material", t.index, m.materials.size(), "materials");
+    case PointerObject::Light:
+        return ctx.check_index(el, "pointer's light", t.index, m.lights.size(), "lights");
+    case PointerObject::Camera:
+        return ctx.check_index(el, "pointer's camera", t.index, m.cameras.size(), "cameras");
+    }
+}
+
+// The target of channel c of animation a; empty (the pointer named in *ignored) for a
+// KHR_animation_pointer channel on something that does not change pixels, and for a
+// channel without a target node.
+std::optional<Target> channel_target(const GltfContext& ctx, size_t a, size_t c,
+                                     std::vector<std::string>& untargeted,
+                                     std::vector<std::string>& ignored) {
+    const tinygltf::AnimationChannel& ch = ctx.model.animations[a].channels[c];
+    Target t;
+    t.channel = element("animations", a) + "." + element("channels", c);
+    t.animation = a;
+    if (ch.target_path == "pointer") {
+        const auto it = ch.target_extensions.find("KHR_animation_pointer");
+        const tinygltf::Value ext = it != ch.target_extensions.end() ? it->second : tinygltf::Value();
+        if (!ext.IsObject() || !ext.Get("pointer").IsString()) {
+            untargeted.push_back(t.channel);  // no pointer: nothing to target
+            return std::nullopt;
+        }
+        const std::string pointer = ext.Get("pointer").Get<std::string>();
+        const std::optional<PointerTarget> p = resolve_pointer(pointer);
+        if (!p) {
+            ignored.push_back(t.channel + " '" + pointer + "'");
+            return std::nullopt;
+        }
+        t.object = p->object;
+        t.index = p->index;
+        t.property = p->property;
+        t.width = p->width;
+        check_pointer_index(ctx, t.channel, t);
+        if (t.object == PointerObject::Node) t.path = node_path(p->property);
+        return t;
+    }
+    if (ch.target_node < 0) {
+        untargeted.push_back(t.channel);
+        return std::nullopt;
+    }
+    ctx.check_index(t.channel, "target node", ch.target_node, ctx.model.nodes.size(), "nodes");
+    t.index = ch.target_node;
+    if (ch.target_path != "translation" && ch.target_path != "rotation" &&
+        ch.target_path != "scale" && ch.target_path != "weights")
+        ctx.fail(t.channel, "target path '" + ch.target_path +
+                                "' is not translation, rotation, scale, weights or pointer");
+    t.path = node_path(ch.target_path);
+    return t;
+}
+
+// A node channel's checks against the node it animates.
+void check_node_target(const GltfContext& ctx, const Target& t) {
+    const tinygltf::Node& node = ctx.model.nodes[size_t(t.index)];
+    const std::string name = element("nodes", size_t(t.index));
+    if (t.path != Path::Weights && t.path != Path::Visible && !node.matrix.empty())
+        ctx.fail(t.channel, "animates " + name + ", which has a matrix (animated nodes must use TRS)");
+    if (t.path == Path::Weights && target_count(ctx, node) == 0)
+        ctx.fail(t.channel, "animates the weights of " + name + ", whose mesh has no morph targets");
+}
+
+const char* object_array(PointerObject o) {
+    static const char* const names[] = {"nodes", "materials", "lights", "cameras"};
+    return names[int(o)];
+}
+
+}  // namespace
+
 GltfAnimations::GltfAnimations(const GltfContext& ctx) {
     const tinygltf::Model& m = ctx.model;
-    struct Target {
-        int node;
-        Path path;
-        size_t curve, animation;
-    };
     // Out-of-spec but renderable: one summary warning per kind, with a count and the
     // first examples (as the glTF validator reports), not one line per channel.
-    std::vector<std::string> untargeted, overlapping;
+    std::vector<std::string> untargeted, ignored, overlapping, overlapping_properties;
     std::vector<Target> targets;
     for (size_t a = 0; a < m.animations.size(); ++a) {
         const tinygltf::Animation& anim = m.animations[a];
-        std::set<std::pair<int, int>> seen;  // (node, path) within this animation
+        // (object, index, property) within this animation.
+        std::set<std::tuple<int, int, std::string>> seen;
         for (size_t c = 0; c < anim.channels.size(); ++c) {
             const tinygltf::AnimationChannel& ch = anim.channels[c];
-            const std::string el = element("animations", a) + "." + element("channels", c);
-            ctx.check_index(el, "sampler", ch.sampler, anim.samplers.size(), "samplers");
-            if (ch.target_path == "pointer" || ch.target_node < 0) {
-                // KHR_animation_pointer and other extensions name targets we do not know.
-                untargeted.push_back(el);
-                continue;
-            }
-            ctx.check_index(el, "target node", ch.target_node, m.nodes.size(), "nodes");
-            Path path;
-            if (ch.target_path == "translation")
-                path = Path::Translation;
-            else if (ch.target_path == "rotation")
-                path = Path::Rotation;
-            else if (ch.target_path == "scale")
-                path = Path::Scale;
-            else if (ch.target_path == "weights")
-                path = Path::Weights;
-            else
-                ctx.fail(el, "target path '" + ch.target_path +
-                                 "' is not translation, rotation, scale or weights");
-            const tinygltf::Node& node = m.nodes[size_t(ch.target_node)];
-            if (path != Path::Weights && !node.matrix.empty())
-                ctx.fail(el, "animates " + element("nodes", size_t(ch.target_node)) +
-                                 ", which has a matrix (animated nodes must use TRS)");
-            if (path == Path::Weights && target_count(ctx, node) == 0)
-                ctx.fail(el, "animates the weights of " +
-                                 element("nodes", size_t(ch.target_node)) +
-                                 ", whose mesh has no morph targets");
-            if (!seen.insert({ch.target_node, int(path)}).second)
-                ctx.fail(el, "targets " + element("nodes", size_t(ch.target_node)) + " " +
-                                 path_name(path) + " again in the same animation");
-            m_curves.push_back(read_curve(ctx, a, ch.sampler, path, ch.target_node));
-            targets.push_back({ch.target_node, path, m_curves.size() - 1, a});
+            ctx.check_index(element("animations", a) + "." + element("channels", c), "sampler",
+                            ch.sampler, anim.samplers.size(), "samplers");
+            std::optional<Target> t = channel_target(ctx, a, c, untargeted, ignored);
+            if (!t) continue;
+            if (t->object == PointerObject::Node) check_node_target(ctx, *t);
+            const std::string what =
+                t->object == PointerObject::Node ? path_name(t->path) : t->property;
+            if (!seen.insert({int(t->object), t->index, what}).second)
+                ctx.fail(t->channel, "targets " + element(object_array(t->object), size_t(t->index)) +
+                                         " " + what + " again in the same animation");
+            m_curves.push_back(read_curve(ctx, a, ch.sampler, t->path, t->index, t->width));
+            t->curve = m_curves.size() - 1;
+            targets.push_back(std::move(*t));
         }
     }
     if (!untargeted.empty())
         ctx.warn("animations", std::to_string(untargeted.size()) +
                                    " channel(s) without a target node ignored" +
                                    examples(untargeted));
+    if (!ignored.empty())
+        ctx.warn("animations", std::to_string(ignored.size()) +
+                                   " KHR_animation_pointer channel(s) animate properties that do "
+                                   "not change the render, ignored" +
+                                   examples(ignored));
     if (m_curves.empty()) return;
     // Pointers are taken once m_curves has stopped growing.
     m_nodes.resize(m.nodes.size());
-    std::map<const AnimationCurve**, size_t> used;  // the animation each slot came from
+    std::map<const void*, size_t> used;  // the animation each slot came from
     for (const Target& t : targets) {
-        NodeChannels& nc = m_nodes[size_t(t.node)];
+        const AnimationCurve* curve = &m_curves[t.curve];
+        if (t.object != PointerObject::Node) {
+            add_property_channel(t.object, t.index, {t.property, t.width, curve, t.channel},
+                                 t.animation, used, overlapping_properties);
+            continue;
+        }
+        NodeChannels& nc = m_nodes[size_t(t.index)];
         const AnimationCurve** slot = t.path == Path::Translation ? &nc.translation
                                       : t.path == Path::Rotation  ? &nc.rotation
                                       : t.path == Path::Scale     ? &nc.scale
-                                                                  : &nc.weights;
+                                      : t.path == Path::Weights   ? &nc.weights
+                                                                  : &nc.visible;
         if (*slot) {
-            overlapping.push_back(element("nodes", size_t(t.node)) + " " + path_name(t.path) +
+            overlapping.push_back(element("nodes", size_t(t.index)) + " " + path_name(t.path) +
                                   " by " + element("animations", used[slot]) + " and " +
                                   element("animations", t.animation));
             continue;
         }
-        *slot = &m_curves[t.curve];
+        *slot = curve;
         used[slot] = t.animation;
     }
     // All animations play on one timeline, so a property driven by two has two values.
@@ -287,12 +405,42 @@ GltfAnimations::GltfAnimations(const GltfContext& ctx) {
                                    " node properties animated by several animations; the "
                                    "first animation's channel is used" +
                                    examples(overlapping));
+    if (!overlapping_properties.empty())
+        ctx.warn("animations", std::to_string(overlapping_properties.size()) +
+                                   " material, light or camera properties animated by several "
+                                   "animations; the first animation's channel is used" +
+                                   examples(overlapping_properties));
+}
+
+void GltfAnimations::add_property_channel(PointerObject object, int index, PropertyChannel ch,
+                                          size_t animation, std::map<const void*, size_t>& used,
+                                          std::vector<std::string>& overlapping) {
+    std::vector<std::vector<PropertyChannel>>& lists = m_properties[size_t(object)];
+    if (lists.size() <= size_t(index)) lists.resize(size_t(index) + 1);
+    std::vector<PropertyChannel>& list = lists[size_t(index)];
+    for (const PropertyChannel& other : list)
+        if (other.property == ch.property) {
+            overlapping.push_back(element(object_array(object), size_t(index)) + " " +
+                                  ch.property + " by " +
+                                  element("animations", used[other.curve]) + " and " +
+                                  element("animations", animation));
+            return;
+        }
+    used[ch.curve] = animation;
+    list.push_back(std::move(ch));
+}
+
+const std::vector<PropertyChannel>& GltfAnimations::properties(PointerObject object,
+                                                               int index) const {
+    static const std::vector<PropertyChannel> none;
+    const auto& lists = m_properties[size_t(object)];
+    return index >= 0 && size_t(index) < lists.size() ? lists[size_t(index)] : none;
 }
 
 const NodeChannels* GltfAnimations::node(int index) const {
     if (index < 0 || size_t(index) >= m_nodes.size()) return nullptr;
     const NodeChannels& nc = m_nodes[size_t(index)];
-    return nc.animates_transform() || nc.weights ? &nc : nullptr;
+    return nc.animates_transform() || nc.weights || nc.visible ? &nc : nullptr;
 }
 
 NodePose GltfAnimations::pose(int index, const NodePose& rest, double t) const {

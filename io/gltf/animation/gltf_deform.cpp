@@ -1,10 +1,10 @@
-#include "io/gltf/gltf_deform.h"
+#include "io/gltf/animation/gltf_deform.h"
 
 #include <cmath>
 #include <map>
 
 #include "io/gltf/gltf_accessor.h"
-#include "io/gltf/gltf_skin_weights.h"
+#include "io/gltf/animation/gltf_skin_weights.h"
 
 namespace penumbra {
 

@@ -1,12 +1,15 @@
 // glTF animations: samplers (key times and values) and the channels that drive node
-// translation, rotation, scale and morph-target weights, validated at load and sampled
-// at any time exactly as glTF 2.0, Appendix C specifies.
+// translation, rotation, scale and morph-target weights, and through KHR_animation_pointer
+// node visibility and material, light and camera properties; validated at load and
+// sampled at any time exactly as glTF 2.0, Appendix C specifies.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
 #include "core/math/transform.h"
+#include "io/gltf/animation/gltf_pointer.h"
 
 namespace penumbra {
 
@@ -36,8 +39,18 @@ struct NodeChannels {
     const AnimationCurve* rotation = nullptr;
     const AnimationCurve* scale = nullptr;
     const AnimationCurve* weights = nullptr;
+    const AnimationCurve* visible = nullptr;  // KHR_node_visibility: nonzero is visible
 
     bool animates_transform() const { return translation || rotation || scale; }
+};
+
+// A KHR_animation_pointer channel on a material, light or camera property: the pointer
+// below the object (gltf_pointer.h) and the curve of its values.
+struct PropertyChannel {
+    std::string property;
+    size_t width = 1;
+    const AnimationCurve* curve = nullptr;
+    std::string channel;  // "animations[a].channels[c]", for messages
 };
 
 // Translation, rotation (unit quaternion, glTF's x y z w) and scale, in double.
@@ -62,6 +75,8 @@ public:
     bool empty() const { return m_curves.empty(); }
     // The node's channels; nullptr when no channel targets it.
     const NodeChannels* node(int index) const;
+    // The animated properties of material, light or camera `index` (not Node: node()).
+    const std::vector<PropertyChannel>& properties(PointerObject object, int index) const;
     // The node's pose at time t: its translation/rotation/scale with the animated ones
     // replaced by their samples. `rest` is the node's own TRS.
     NodePose pose(int index, const NodePose& rest, double t) const;
@@ -73,8 +88,14 @@ public:
     GltfAnimations& operator=(const GltfAnimations&) = delete;
 
 private:
+    void add_property_channel(PointerObject object, int index, PropertyChannel ch,
+                              size_t animation, std::map<const void*, size_t>& used,
+                              std::vector<std::string>& overlapping);
+
     std::vector<AnimationCurve> m_curves;
     std::vector<NodeChannels> m_nodes;  // per glTF node; empty when nothing is animated
+    // Per PointerObject (Node unused), per object index: its animated properties.
+    std::vector<std::vector<PropertyChannel>> m_properties[4];
 };
 
 // Reads the animations of the glTF file at path (for tests and tools); throws SceneError.

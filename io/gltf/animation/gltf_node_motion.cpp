@@ -1,4 +1,4 @@
-#include "io/gltf/gltf_node_motion.h"
+#include "io/gltf/animation/gltf_node_motion.h"
 
 #include <algorithm>
 #include <cmath>
