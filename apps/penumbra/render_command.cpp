@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <set>
 #include <tuple>
 
@@ -19,6 +20,7 @@
 #include "apps/penumbra/render_checkpoint.h"
 #include "apps/penumbra/render_metadata.h"
 #include "apps/penumbra/scene_setup.h"
+#include "apps/penumbra/view_transforms.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/progress.h"
@@ -73,7 +75,7 @@ bool claim_output(const BatchJob& job, const std::string& output, BatchState& st
     const std::string key = fs::absolute(output).lexically_normal().string();
     if (!state.claimed.insert(key).second)
         throw SceneError(output + ": another image of this batch already writes it; add "
-                                  "{frame}, {camera} or {index} to --name");
+                                  "{frame}, {view}, {camera} or {index} to --name");
     if (!job.options.overwrite && fs::exists(output) && is_finished_render(output)) {
         result.status = JobStatus::Skipped;
         result.message = "exists (--overwrite renders it again)";
@@ -156,6 +158,7 @@ RenderOptions job_render_options(const BatchJob& job, int height, BatchState& st
     const RenderCommandOptions& o = job.options;
     RenderOptions ropt = render_options_for(o, fs::path(job.scene).filename().string());
     if (o.timeline.frame) ropt.label += " frame " + std::to_string(*o.timeline.frame);
+    if (job.view >= 0) ropt.label += " " + job.views->name(size_t(job.view));
     if (job.band >= 0) {
         std::tie(ropt.row_begin, ropt.row_end) = band_rows(height, job.band, o.bands);
         ropt.label += " band " + std::to_string(job.band + 1) + "/" + std::to_string(o.bands);
@@ -268,13 +271,45 @@ void write_job_outputs(const BatchJob& job, const SceneSetup& setup, const Film&
     if (warning) LOG_WARNING(output << ": " << warning->message);
 }
 
-void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
+// The scene the jobs of one group render from: loaded by the first that renders, kept
+// for the others (the views of a frame). A load that failed fails the group's other
+// images with its message, without loading again.
+struct GroupScene {
+    size_t group = std::numeric_limits<size_t>::max();
+    std::unique_ptr<SceneSetup> setup;
+    std::string error;
+};
+
+// The job's scene, set up, looking through the job's view.
+SceneSetup& group_setup(const BatchJob& job, GroupScene& g) {
+    if (g.group != job.group) {
+        g.setup.reset();  // the previous group's scene goes before the next one loads
+        g.error.clear();
+        g.group = job.group;
+    }
+    if (!g.error.empty()) throw SceneError(g.error);
+    if (!g.setup) {
+        try {
+            g.setup = setup_scene(job.options, job.scene);
+        } catch (const std::exception& e) {
+            g.error = e.what();
+            throw;
+        }
+        if (job.views)
+            g.setup->views =
+                view_cameras(*job.views, g.setup->scene.bounds(),
+                             float(g.setup->width) / float(g.setup->height), job.options.orbit);
+    }
+    if (job.view >= 0) use_view(*g.setup, size_t(job.view), job.options);
+    return *g.setup;
+}
+
+void render_job(const BatchJob& job, GroupScene& scene, BatchState& state, JobResult& result) {
     const RenderCommandOptions& o = job.options;
-    const std::string& path = job.scene;
     // Without {camera} the output name is known before loading: skip without loading.
     if (!output_needs_camera(job) && !claim_output(job, output_path(job, ""), state, result))
         return;
-    const std::unique_ptr<SceneSetup> setup = setup_scene(o, path);
+    SceneSetup* const setup = &group_setup(job, scene);
     const CameraDesc& cam_desc = setup->camera_desc;
     if (output_needs_camera(job) &&
         !claim_output(job, output_path(job, cam_desc.name), state, result))
@@ -347,7 +382,10 @@ int run_render_jobs(const std::vector<BatchJob>& jobs, const RenderCommandOption
     const InterruptScope interrupt;
     BatchProgress progress(jobs.size(), !o.quiet && jobs.size() > 1);
     BatchState state{progress, interrupt.count(), {}};
-    for (const BatchJob& job : jobs) {
+    GroupScene scene;
+    const size_t first_result = results.size();
+    for (size_t i = 0; i < jobs.size(); ++i) {
+        const BatchJob& job = jobs[i];
         JobResult r;
         r.scene = job.scene;
         r.frame = job.options.timeline.frame.value_or(-1);
@@ -356,7 +394,7 @@ int run_render_jobs(const std::vector<BatchJob>& jobs, const RenderCommandOption
             r.message = "interrupted before it started";
         } else {
             try {
-                render_job(job, state, r);
+                render_job(job, scene, state, r);
             } catch (const std::exception& e) {
                 // One bad scene does not stop the batch.
                 std::fprintf(stderr, "error: %s\n", e.what());
@@ -369,6 +407,11 @@ int run_render_jobs(const std::vector<BatchJob>& jobs, const RenderCommandOption
         }
         progress.job_finished(r.rays);
         results.push_back(r);
+        if (i + 1 == jobs.size() || jobs[i + 1].group != job.group) {
+            if (scene.setup && scene.group == job.group)
+                write_view_transforms(jobs, results, first_result, job.group, *scene.setup);
+            scene.setup.reset();
+        }
     }
     const auto failed = std::count_if(results.begin(), results.end(), [](const JobResult& r) {
         return r.status == JobStatus::Failed;

@@ -1,0 +1,335 @@
+// --views end to end: an orbit's transforms.json reprojects known points onto the pixels
+// where the images show them, explicit cameras are rendered as given, every view of a
+// scene comes from one load and equals a render of that view alone, and bad views specs
+// and files fail before anything renders, naming the option or the file.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_process.h"
+#include "support/exr_pixels.h"
+#include "support/gltf_builder.h"
+
+namespace penumbra {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using test::run_penumbra;
+
+struct Point {
+    double x, y, z;
+};
+// The markers' centres: a red and a green emissive octahedron, nothing else in the scene.
+const Point kRed = {0.6, 0.25, -0.3}, kGreen = {-0.5, -0.2, 0.45};
+
+std::string write_marker_scene(const test::ScratchDir& dir) {
+    test::GltfBuilder b;
+    const float r = 0.04f;
+    const std::vector<float> pos = {r, 0, 0, -r, 0, 0, 0, r, 0, 0, -r, 0, 0, 0, r, 0, 0, -r};
+    // Counter-clockwise seen from outside: (x, y, z) for faces whose signs multiply to +1.
+    const std::vector<uint16_t> idx = {0, 2, 4, 1, 4, 2, 0, 5, 2, 1, 2, 5,
+                                       0, 4, 3, 1, 3, 4, 0, 3, 5, 1, 5, 3};
+    const int p = b.add(pos, test::kFloat, "VEC3");
+    const int i = b.add(idx, test::kUShort, "SCALAR");
+    auto mesh = [&](int material) {
+        return "{\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(p) +
+               "},\"indices\":" + std::to_string(i) + ",\"material\":" + std::to_string(material) +
+               "}]}";
+    };
+    auto node = [](int mesh, const Point& t) {
+        return "{\"mesh\":" + std::to_string(mesh) + ",\"translation\":[" + std::to_string(t.x) +
+               "," + std::to_string(t.y) + "," + std::to_string(t.z) + "]}";
+    };
+    auto emissive = [](const char* rgb) {
+        return std::string(
+                   "{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0,0,0,1]},"
+                   "\"emissiveFactor\":[") +
+               rgb + "],\"doubleSided\":true}";
+    };
+    const std::string members = "\"materials\":[" + emissive("4,0,0") + "," + emissive("0,4,0") +
+                                "],\"meshes\":[" + mesh(0) + "," + mesh(1) + "],\"nodes\":[" +
+                                node(0, kRed) + "," + node(1, kGreen) +
+                                "],\"scenes\":[{\"nodes\":[0,1]}],\"scene\":0";
+    return b.write(dir, "markers.gltf", members, test::BufferStorage::DataUri);
+}
+
+json read_json(const std::string& path) {
+    std::ifstream in(path);
+    return json::parse(in);
+}
+
+// Where the camera of `frame` puts p, in pixels (x right, y down, pixel i spanning
+// [i, i + 1)): through the transform's inverse into OpenGL camera axes (looking down -Z),
+// then the pinhole of fl_x, fl_y, cx, cy.
+std::pair<double, double> project(const json& t, const json& frame, const Point& p) {
+    const json& m = frame.at("transform_matrix");
+    double d[3] = {p.x - m[0][3].get<double>(), p.y - m[1][3].get<double>(),
+                   p.z - m[2][3].get<double>()};
+    double c[3];
+    for (int k = 0; k < 3; ++k)  // R^T d: the rotation's columns are the camera's axes
+        c[k] = m[0][k].get<double>() * d[0] + m[1][k].get<double>() * d[1] +
+               m[2][k].get<double>() * d[2];
+    EXPECT_LT(c[2], 0) << "the point is behind the camera";
+    return {t.at("cx").get<double>() + t.at("fl_x").get<double>() * c[0] / -c[2],
+            t.at("cy").get<double>() - t.at("fl_y").get<double>() * c[1] / -c[2]};
+}
+
+// The centroid of the pixels where `channel` (0 red, 1 green) exceeds the other.
+std::pair<double, double> marker_centroid(const test::Pixels& px, int channel) {
+    const size_t nc = px.channels.size();
+    const int r = int(std::find(px.channels.begin(), px.channels.end(), "R") - px.channels.begin());
+    const int g = int(std::find(px.channels.begin(), px.channels.end(), "G") - px.channels.begin());
+    double sw = 0, sx = 0, sy = 0;
+    for (int y = 0; y < px.height; ++y)
+        for (int x = 0; x < px.width; ++x) {
+            const float* v = &px.data[(size_t(y) * px.width + x) * nc];
+            const double w = channel == 0 ? v[r] - v[g] : v[g] - v[r];
+            if (w <= 0) continue;
+            sw += w;
+            sx += w * (x + 0.5);
+            sy += w * (y + 0.5);
+        }
+    if (sw <= 0) return {-1e9, -1e9};
+    return {sx / sw, sy / sw};
+}
+
+// The image `frame` names (in dir) shows each marker where the camera projects the
+// marker's centre, within a pixel; `intrinsics` holds fl_x, fl_y, cx, cy, w and h. Returns
+// the larger of the two distances.
+double expect_frame_reprojects(const std::string& dir, const json& intrinsics, const json& frame) {
+    const std::string image = dir + "/" + frame.at("file_path").get<std::string>();
+    const test::Pixels px = test::read_pixels(image);
+    EXPECT_TRUE(px.error.empty()) << px.error;
+    EXPECT_EQ(px.width, intrinsics.at("w").get<int>());
+    EXPECT_EQ(px.height, intrinsics.at("h").get<int>());
+    const auto [rx, ry] = project(intrinsics, frame, kRed);
+    const auto [gx, gy] = project(intrinsics, frame, kGreen);
+    // The markers must not overlap, or the centroids would mix.
+    EXPECT_GT(std::hypot(rx - gx, ry - gy), 10) << image;
+    const auto [mrx, mry] = marker_centroid(px, 0);
+    const auto [mgx, mgy] = marker_centroid(px, 1);
+    const double er = std::hypot(mrx - rx, mry - ry), eg = std::hypot(mgx - gx, mgy - gy);
+    EXPECT_LT(er, 1.0) << image << ": red at " << mrx << "," << mry << ", projected " << rx << ","
+                       << ry;
+    EXPECT_LT(eg, 1.0) << image << ": green at " << mgx << "," << mgy << ", projected " << gx << ","
+                       << gy;
+    return std::max(er, eg);
+}
+
+// A 96 x 96 render of the scene into out_dir with `more` options.
+std::vector<std::string> render_args(const std::string& scene, const std::string& out_dir,
+                                     std::vector<std::string> more, int spp = 16) {
+    std::vector<std::string> a = {"render", scene, "--out-dir", out_dir, "--width", "96",
+                                  "--height", "96", "--spp", std::to_string(spp)};
+    a.insert(a.end(), more.begin(), more.end());
+    return a;
+}
+
+TEST(ViewsCli, OrbitCamerasReprojectTheMarkersInEveryView) {
+    const test::ScratchDir dir;
+    const std::string scene = write_marker_scene(dir);
+    const auto r = run_penumbra(render_args(
+        scene, dir.file("out"), {"--views", "orbit:8", "--orbit-elevation", "25", "--no-preview"}));
+    ASSERT_EQ(r.status, 0) << r.output;
+    const json t = read_json(dir.file("out/markers/transforms.json"));
+    for (const char* key : {"camera_angle_x", "fl_x", "fl_y", "cx", "cy", "w", "h"})
+        EXPECT_TRUE(t.contains(key)) << key;
+    double worst = 0;
+    for (const json& frame : t.at("frames"))
+        worst = std::max(worst, expect_frame_reprojects(dir.file("out/markers"), t, frame));
+    ASSERT_EQ(t.at("frames").size(), 8u);
+    for (int v = 0; v < 8; ++v) {
+        char name[16];
+        std::snprintf(name, sizeof name, "%04d.exr", v);
+        EXPECT_EQ(t["frames"][size_t(v)]["file_path"], name);
+    }
+    std::printf("largest marker reprojection error: %.3f px\n", worst);
+    // One load and one accelerator build for the eight images.
+    size_t loads = 0;
+    for (size_t at = 0; (at = r.output.find("load and build:", at)) != std::string::npos; ++at)
+        ++loads;
+    EXPECT_EQ(loads, 1u) << r.output;
+}
+
+TEST(ViewsCli, OrbitViewsAreEvenlySpacedAtTheElevationAndTheJitterIsSeeded) {
+    const test::ScratchDir dir;
+    const std::string scene = write_marker_scene(dir);
+    auto centres = [&](const std::string& out, std::vector<std::string> more) {
+        more.insert(more.end(), {"--views", "orbit:6", "--orbit-elevation", "30"});
+        const auto r = run_penumbra(render_args(scene, dir.file(out), more, 1));
+        EXPECT_EQ(r.status, 0) << r.output;
+        std::vector<std::array<double, 3>> eyes;
+        const json t = read_json(dir.file(out + "/markers/transforms.json"));
+        for (const json& f : t.at("frames"))
+            eyes.push_back({f["transform_matrix"][0][3].get<double>(),
+                            f["transform_matrix"][1][3].get<double>(),
+                            f["transform_matrix"][2][3].get<double>()});
+        return eyes;
+    };
+    const auto eyes = centres("plain", {});
+    const double cx = (kRed.x + kGreen.x) / 2, cy = (kRed.y + kGreen.y) / 2,
+                 cz = (kRed.z + kGreen.z) / 2;
+    for (size_t v = 0; v < eyes.size(); ++v) {
+        const double dx = eyes[v][0] - cx, dy = eyes[v][1] - cy, dz = eyes[v][2] - cz;
+        EXPECT_NEAR(std::atan2(dy, std::hypot(dx, dz)) * 180 / M_PI, 30, 1e-3) << v;
+        // Azimuth 60 v degrees, from +Z towards +X.
+        const double az = std::atan2(dx, dz) * 180 / M_PI;
+        EXPECT_NEAR(std::remainder(az - 60.0 * double(v), 360.0), 0, 1e-3) << v;
+    }
+    const auto a = centres("a", {"--orbit-jitter", "10", "--orbit-seed", "3"});
+    const auto b = centres("b", {"--orbit-jitter", "10", "--orbit-seed", "3"});
+    const auto c = centres("c", {"--orbit-jitter", "10", "--orbit-seed", "4"});
+    EXPECT_EQ(a, b);
+    EXPECT_NE(a, c);
+    EXPECT_NE(a, eyes);
+}
+
+TEST(ViewsCli, ExplicitCamerasAreRenderedAsGiven) {
+    const test::ScratchDir dir;
+    const std::string scene = write_marker_scene(dir);
+    // From the front by a matrix, from above (up -Z) with a narrower field, and named.
+    dir.write("cams.json", R"([
+        {"matrix": [[1,0,0,0.05],[0,1,0,0.02],[0,0,1,3],[0,0,0,1]]},
+        {"name": "top", "position": [0.05, 3.5, 0.1], "look_at": [0.05, 0, 0.05],
+         "up": [0, 0, -1], "yfov": 35},
+        {"position": [2.5, 0.4, 1.0], "look_at": [0, 0, 0]}
+    ])");
+    const auto r = run_penumbra(
+        render_args(scene, dir.file("out"),
+                    {"--views", dir.file("cams.json"), "--name", "{camera}.exr", "--no-preview"}));
+    ASSERT_EQ(r.status, 0) << r.output;
+    const json t = read_json(dir.file("out/transforms.json"));
+    ASSERT_EQ(t.at("frames").size(), 3u);
+    EXPECT_EQ(t["frames"][0]["file_path"], "view_0000.exr");
+    EXPECT_EQ(t["frames"][1]["file_path"], "top.exr");
+    EXPECT_EQ(t["frames"][2]["file_path"], "view_0002.exr");
+    // The intrinsics differ (35 degrees against the default 40): given per frame.
+    EXPECT_FALSE(t.contains("fl_x"));
+    EXPECT_NE(t["frames"][0]["fl_y"], t["frames"][1]["fl_y"]);
+    const json m0 = json::array({json::array({1, 0, 0, 0.05f}), json::array({0, 1, 0, 0.02f}),
+                                 json::array({0, 0, 1, 3}), json::array({0, 0, 0, 1})});
+    EXPECT_EQ(t["frames"][0]["transform_matrix"], m0);
+    EXPECT_NEAR(t["frames"][1]["transform_matrix"][1][3].get<double>(), 3.5, 1e-6);
+    // Per-frame intrinsics: each frame reprojects with its own.
+    for (const json& frame : t["frames"]) expect_frame_reprojects(dir.file("out"), frame, frame);
+}
+
+// Only the camera changes between the views of one load: a view rendered among the
+// orbit's is bitwise the image of its camera rendered from a load of its own.
+TEST(ViewsCli, EachViewEqualsARenderOfItsCameraAlone) {
+    const test::ScratchDir dir;
+    const std::string scene = write_marker_scene(dir);
+    auto r = run_penumbra(
+        render_args(scene, dir.file("orbit"), {"--views", "orbit:4", "--no-preview"}, 4));
+    ASSERT_EQ(r.status, 0) << r.output;
+    const json t = read_json(dir.file("orbit/markers/transforms.json"));
+    const json view2 = t["frames"][2];
+    std::ofstream(dir.file("one.json"))
+        << json::array({{{"matrix", view2["transform_matrix"]}}}).dump();
+    r = run_penumbra(render_args(scene, dir.file("alone"),
+                                 {"--views", dir.file("one.json"), "--no-preview"}, 4));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(
+        test::same_pixels(dir.file("orbit/markers/0002.exr"), dir.file("alone/markers/0000.exr")));
+}
+
+// A job file's "views" takes orbit:N as it is and a cameras file relative to the job
+// file; the previews are what transforms.json names.
+TEST(ViewsCli, JobFilesTakeViews) {
+    const test::ScratchDir dir;
+    const std::string scene = write_marker_scene(dir);
+    fs::create_directories(dir.file("jobs"));
+    dir.write("jobs/cams.json", R"([{"position": [0, 0.5, 3], "look_at": [0, 0, 0]}])");
+    dir.write("jobs/job.json", R"({"defaults": {"width": 48, "height": 48, "spp": 2},
+        "jobs": [{"scene": "../markers.gltf", "views": "orbit:2", "output": "orbit/{view}.exr"},
+                 {"scene": "../markers.gltf", "views": "cams.json", "output": "cams/{view}.exr"}]})");
+    const auto r = run_penumbra({"render", "--job", dir.file("jobs/job.json")});
+    ASSERT_EQ(r.status, 0) << r.output;
+    const json orbit = read_json(dir.file("jobs/orbit/transforms.json"));
+    ASSERT_EQ(orbit["frames"].size(), 2u);
+    EXPECT_EQ(orbit["frames"][1]["file_path"], "0001.png");
+    EXPECT_TRUE(fs::exists(dir.file("jobs/orbit/0001.png")));
+    EXPECT_TRUE(fs::exists(dir.file("jobs/orbit/0001.exr")));
+    const json cams = read_json(dir.file("jobs/cams/transforms.json"));
+    ASSERT_EQ(cams["frames"].size(), 1u);
+    EXPECT_NEAR(cams["frames"][0]["transform_matrix"][2][3].get<double>(), 3, 1e-6);
+}
+
+// A rerun skips the finished views and still lists them; a view rendered again replaces
+// its own entry.
+TEST(ViewsCli, ResumedBatchesKeepEveryViewInTransformsJson) {
+    const test::ScratchDir dir;
+    const std::string scene = write_marker_scene(dir);
+    const std::vector<std::string> args =
+        render_args(scene, dir.file("out"), {"--views", "orbit:3", "-q"}, 1);
+    ASSERT_EQ(run_penumbra(args).status, 0);
+    fs::remove(dir.file("out/markers/0001.exr"));
+    fs::remove(dir.file("out/markers/0001.png"));
+    const std::string before = [&] {
+        std::ifstream in(dir.file("out/markers/transforms.json"));
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    }();
+    ASSERT_EQ(run_penumbra(args).status, 0);
+    std::ifstream in(dir.file("out/markers/transforms.json"));
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), before);
+}
+
+TEST(ViewsCli, BadViewsFailBeforeRenderingNamingTheOptionOrFile) {
+    const test::ScratchDir dir;
+    const std::string scene = write_marker_scene(dir);
+    dir.write("broken.json", "[{\"position\": [0, 0, 3], \"look_at\": [0, 0, 0]},");
+    dir.write("short.json", R"([{"position": [0, 0, 3], "look_at": [0, 0]}])");
+    dir.write("lonely.json", R"([{"position": [0, 0, 3]}])");
+    dir.write("scaled.json", R"([{"matrix": [[2,0,0,0],[0,2,0,0],[0,0,2,3],[0,0,0,1]]}])");
+    dir.write("typo.json", R"([{"position": [0, 0, 3], "lookat": [0, 0, 0]}])");
+    dir.write("fov.json", R"([{"position": [0, 0, 3], "look_at": [0, 0, 0], "yfov": 0.7}, )"
+                          R"({"position": [0, 0, 3], "look_at": [0, 0, 0], "yfov": 180}])");
+    dir.write("empty.json", "[]");
+    dir.write("job.json", R"({"jobs": [{"scene": "markers.gltf", "views": "orbit:x"}]})");
+    struct Case {
+        std::vector<std::string> args;
+        std::string message;
+    } cases[] = {
+        {{"--views", "orbit:0"}, "--views: views 'orbit:0': expected orbit:N with N from 1"},
+        {{"--views", "orbit:"}, "--views: views 'orbit:': expected orbit:N"},
+        {{"--views", "orbit:8x"}, "--views: views 'orbit:8x': expected orbit:N"},
+        {{"--views", dir.file("none.json")},
+         dir.file("none.json") + ": cannot open the views file"},
+        {{"--views", dir.file("broken.json")}, dir.file("broken.json") + ": not valid JSON"},
+        {{"--views", dir.file("short.json")},
+         dir.file("short.json") + ": [0].look_at: expected 3 numbers"},
+        {{"--views", dir.file("lonely.json")},
+         dir.file("lonely.json") + ": [0]: position and look_at go together"},
+        {{"--views", dir.file("scaled.json")},
+         dir.file("scaled.json") + ": [0].matrix: the upper 3x3 is not a rotation"},
+        {{"--views", dir.file("typo.json")}, dir.file("typo.json") + ": [0].lookat: unknown key"},
+        {{"--views", dir.file("fov.json")},
+         dir.file("fov.json") + ": [1].yfov: expected degrees between 0 and 180"},
+        {{"--views", dir.file("empty.json")},
+         dir.file("empty.json") + ": expected a non-empty JSON array"},
+        {{"--views", "orbit:3", "--name", "same.exr"},
+         "3 views would all write 'same.exr'; add {view}"},
+        {{"--views", "orbit:3", "--camera", "0"}, "the views replace the file's camera"},
+        {{"--job", dir.file("job.json")},
+         dir.file("job.json") + ": jobs[0].views: views 'orbit:x'"},
+    };
+    for (const Case& c : cases) {
+        std::vector<std::string> args = {"render", "--out-dir", dir.file("out"), "--spp", "1"};
+        if (c.args[0] != "--job") args.insert(args.begin() + 1, scene);
+        args.insert(args.end(), c.args.begin(), c.args.end());
+        const auto r = run_penumbra(args);
+        EXPECT_NE(r.status, 0) << c.message;
+        EXPECT_NE(r.output.find(c.message), std::string::npos) << c.message << "\n" << r.output;
+        EXPECT_FALSE(fs::exists(dir.file("out"))) << c.message;
+    }
+}
+
+}  // namespace
+}  // namespace penumbra
