@@ -7,12 +7,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <limits>
 #include <set>
 #include <tuple>
 
 #include "apps/penumbra/batch.h"
 #include "apps/penumbra/denoise_step.h"
+#include "apps/penumbra/group_scene.h"
 #include "apps/penumbra/interrupt.h"
 #include "apps/penumbra/light_check.h"
 #include "apps/penumbra/option_cli.h"
@@ -269,39 +269,6 @@ void write_job_outputs(const BatchJob& job, const SceneSetup& setup, const Film&
             {path, output, files.preview, o, setup, stats, write_s, written, denoised.get()});
     // Last, where a batch's log is read: the image exists, and why it looks wrong.
     if (warning) LOG_WARNING(output << ": " << warning->message);
-}
-
-// The scene the jobs of one group render from: loaded by the first that renders, kept
-// for the others (the views of a frame). A load that failed fails the group's other
-// images with its message, without loading again.
-struct GroupScene {
-    size_t group = std::numeric_limits<size_t>::max();
-    std::unique_ptr<SceneSetup> setup;
-    std::string error;
-};
-
-// The job's scene, set up, looking through the job's view.
-SceneSetup& group_setup(const BatchJob& job, GroupScene& g) {
-    if (g.group != job.group) {
-        g.setup.reset();  // the previous group's scene goes before the next one loads
-        g.error.clear();
-        g.group = job.group;
-    }
-    if (!g.error.empty()) throw SceneError(g.error);
-    if (!g.setup) {
-        try {
-            g.setup = setup_scene(job.options, job.scene);
-        } catch (const std::exception& e) {
-            g.error = e.what();
-            throw;
-        }
-        if (job.views)
-            g.setup->views =
-                view_cameras(*job.views, g.setup->scene.bounds(),
-                             float(g.setup->width) / float(g.setup->height), job.options.orbit);
-    }
-    if (job.view >= 0) use_view(*g.setup, size_t(job.view), job.options);
-    return *g.setup;
 }
 
 void render_job(const BatchJob& job, GroupScene& scene, BatchState& state, JobResult& result) {
