@@ -2,6 +2,7 @@
 // where the images show them, explicit cameras are rendered as given, every view of a
 // scene comes from one load and equals a render of that view alone, and bad views specs
 // and files fail before anything renders, naming the option or the file.
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
 
 #include "support/cli_process.h"
@@ -126,8 +128,8 @@ double expect_frame_reprojects(const std::string& dir, const json& intrinsics, c
 // A 96 x 96 render of the scene into out_dir with `more` options.
 std::vector<std::string> render_args(const std::string& scene, const std::string& out_dir,
                                      std::vector<std::string> more, int spp = 16) {
-    std::vector<std::string> a = {"render", scene, "--out-dir", out_dir, "--width", "96",
-                                  "--height", "96", "--spp", std::to_string(spp)};
+    std::vector<std::string> a = {"render", scene,      "--out-dir", out_dir, "--width",
+                                  "96",     "--height", "96",        "--spp", std::to_string(spp)};
     a.insert(a.end(), more.begin(), more.end());
     return a;
 }
@@ -219,6 +221,113 @@ TEST(ViewsCli, ExplicitCamerasAreRenderedAsGiven) {
     EXPECT_NEAR(t["frames"][1]["transform_matrix"][1][3].get<double>(), 3.5, 1e-6);
     // Per-frame intrinsics: each frame reprojects with its own.
     for (const json& frame : t["frames"]) expect_frame_reprojects(dir.file("out"), frame, frame);
+}
+
+// A grey box from kBoxLo to kBoxHi, nothing else.
+const Point kBoxLo = {-0.3, 0.1, -0.5}, kBoxHi = {0.5, 0.6, 0.2};
+
+std::string write_box_scene(const test::ScratchDir& dir) {
+    test::GltfBuilder b;
+    std::vector<float> pos;
+    for (int c = 0; c < 8; ++c) {
+        pos.push_back(float(c & 1 ? kBoxHi.x : kBoxLo.x));
+        pos.push_back(float(c & 2 ? kBoxHi.y : kBoxLo.y));
+        pos.push_back(float(c & 4 ? kBoxHi.z : kBoxLo.z));
+    }
+    // Two triangles per face, counter-clockwise seen from outside.
+    const std::vector<uint16_t> idx = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
+                                       2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
+    const int p = b.add(pos, test::kFloat, "VEC3");
+    const int i = b.add(idx, test::kUShort, "SCALAR");
+    const std::string members =
+        "\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.5,0.5,0.5,1]}}]," +
+        test::one_mesh_scene("{\"attributes\":{\"POSITION\":" + std::to_string(p) +
+                             "},\"indices\":" + std::to_string(i) + ",\"material\":0}");
+    return b.write(dir, "box.gltf", members, test::BufferStorage::DataUri);
+}
+
+// The box's silhouette is the convex hull of its projected corners, so the pixels its
+// depth covers span the hull's extent, within a pixel, in every view of the orbit.
+TEST(ViewsCli, TheBoxCoversItsCornersProjectedExtentInEveryView) {
+    const test::ScratchDir dir;
+    const std::string scene = write_box_scene(dir);
+    const auto r = run_penumbra({"render",
+                                 scene,
+                                 "--out-dir",
+                                 dir.file("out"),
+                                 "--width",
+                                 "96",
+                                 "--height",
+                                 "72",
+                                 "--spp",
+                                 "4",
+                                 "--filter",
+                                 "box",
+                                 "--aov",
+                                 "depth",
+                                 "--views",
+                                 "orbit:8",
+                                 "--orbit-elevation",
+                                 "25",
+                                 "--no-preview",
+                                 "-q"});
+    ASSERT_EQ(r.status, 0) << r.output;
+    const json t = read_json(dir.file("out/box/transforms.json"));
+    ASSERT_EQ(t.at("frames").size(), 8u);
+    double worst = 0;
+    for (const json& frame : t["frames"]) {
+        const std::string image = dir.file("out/box/" + frame["file_path"].get<std::string>());
+        double lo[2] = {1e9, 1e9}, hi[2] = {-1e9, -1e9};
+        for (int c = 0; c < 8; ++c) {
+            const Point corner = {c & 1 ? kBoxHi.x : kBoxLo.x, c & 2 ? kBoxHi.y : kBoxLo.y,
+                                  c & 4 ? kBoxHi.z : kBoxLo.z};
+            const auto [x, y] = project(t, frame, corner);
+            lo[0] = std::min(lo[0], x), hi[0] = std::max(hi[0], x);
+            lo[1] = std::min(lo[1], y), hi[1] = std::max(hi[1], y);
+        }
+        const test::Pixels px = test::read_pixels(image);
+        ASSERT_TRUE(px.error.empty()) << px.error;
+        const size_t z = size_t(std::find(px.channels.begin(), px.channels.end(), "Depth.Z") -
+                                px.channels.begin());
+        ASSERT_LT(z, px.channels.size());
+        double mlo[2] = {1e9, 1e9}, mhi[2] = {-1e9, -1e9};
+        for (int y = 0; y < px.height; ++y)
+            for (int x = 0; x < px.width; ++x)
+                if (px.data[(size_t(y) * px.width + x) * px.channels.size() + z] < 1e9f) {
+                    mlo[0] = std::min(mlo[0], double(x)), mhi[0] = std::max(mhi[0], x + 1.0);
+                    mlo[1] = std::min(mlo[1], double(y)), mhi[1] = std::max(mhi[1], y + 1.0);
+                }
+        for (int a = 0; a < 2; ++a) {
+            EXPECT_GT(lo[a], 0) << image << ": the box leaves the frame";
+            EXPECT_LT(hi[a], a == 0 ? 96 : 72) << image << ": the box leaves the frame";
+            EXPECT_NEAR(mlo[a], lo[a], 1.0) << image << " axis " << a;
+            EXPECT_NEAR(mhi[a], hi[a], 1.0) << image << " axis " << a;
+            worst = std::max({worst, std::abs(mlo[a] - lo[a]), std::abs(mhi[a] - hi[a])});
+        }
+    }
+    std::printf("largest difference of the box's extent: %.3f px\n", worst);
+}
+
+// With frames, each frame's views share a load; transforms.json lists every image.
+TEST(ViewsCli, FramesTimesViewsLoadOncePerFrame) {
+    const test::ScratchDir dir;
+    const std::string scene = write_marker_scene(dir);
+    const auto r = run_penumbra(
+        render_args(scene, dir.file("out"), {"--views", "orbit:3", "--frames", "1-2"}, 1));
+    ASSERT_EQ(r.status, 0) << r.output;
+    size_t loads = 0;
+    for (size_t at = 0; (at = r.output.find("load and build:", at)) != std::string::npos; ++at)
+        ++loads;
+    EXPECT_EQ(loads, 2u);
+    const json t = read_json(dir.file("out/markers/transforms.json"));
+    ASSERT_EQ(t.at("frames").size(), 6u);
+    EXPECT_EQ(t["frames"][0]["file_path"], "0000_0001.png");
+    EXPECT_EQ(t["frames"][5]["file_path"], "0002_0002.png");
+    std::unique_ptr<OIIO::ImageInput> in =
+        OIIO::ImageInput::open(dir.file("out/markers/0002_0001.exr"));
+    ASSERT_TRUE(in);
+    EXPECT_EQ(in->spec().get_string_attribute("penumbra:view"), "view_0002");
+    EXPECT_EQ(in->spec().get_string_attribute("penumbra:views"), "orbit:3");
 }
 
 // Only the camera changes between the views of one load: a view rendered among the
