@@ -1,8 +1,14 @@
 #include "job/transforms_json.h"
 
-#include <cmath>
-#include <fstream>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "io/atomic_file.h"
 
@@ -38,6 +44,25 @@ Intrinsics get_intrinsics(const json& frame, const json& top) {
     k.cy = number("cy");
     return k;
 }
+
+// An exclusive lock on a folder while this lives: the farm's tasks update one
+// transforms.json from several processes, and a read-merge-write must not interleave.
+// Where the file system has no locks, flock fails and the update goes on unlocked.
+class FolderLock {
+public:
+    explicit FolderLock(const std::filesystem::path& folder)
+        : m_fd(::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY)) {
+        if (m_fd >= 0) ::flock(m_fd, LOCK_EX);
+    }
+    ~FolderLock() {
+        if (m_fd >= 0) ::close(m_fd);  // closing releases the lock
+    }
+    FolderLock(const FolderLock&) = delete;
+    FolderLock& operator=(const FolderLock&) = delete;
+
+private:
+    int m_fd;
+};
 
 }  // namespace
 
@@ -99,6 +124,9 @@ std::vector<TransformsFrame> read_transforms_json(const std::string& path) {
 }
 
 void update_transforms_json(const std::string& path, const std::vector<TransformsFrame>& frames) {
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    if (!folder.empty()) std::filesystem::create_directories(folder);
+    const FolderLock lock(folder);
     std::vector<TransformsFrame> all = read_transforms_json(path);
     for (const TransformsFrame& f : frames) {
         bool replaced = false;

@@ -41,7 +41,8 @@ std::string transforms_json_text(const std::vector<TransformsFrame>& frames);
 std::vector<TransformsFrame> read_transforms_json(const std::string& path);
 
 // Writes path (atomically) with the frames it already lists, those of the same file_path
-// replaced by `frames`, and the others of `frames` appended in order.
+// replaced by `frames`, and the others of `frames` appended in order. Processes updating
+// one file (farm tasks) take turns: the folder is locked (flock) meanwhile.
 void update_transforms_json(const std::string& path, const std::vector<TransformsFrame>& frames);
 
 }  // namespace penumbra

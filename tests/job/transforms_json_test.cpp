@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "support/gltf_builder.h"
 
@@ -66,6 +68,30 @@ TEST(TransformsJson, UpdatesMergeByFilePath) {
     EXPECT_TRUE(read[2].intrinsics == k);
     dir.write("broken.json", "{\"frames\": [");
     EXPECT_TRUE(read_transforms_json(dir.file("broken.json")).empty());
+}
+
+// Farm tasks update one file from several processes: the folder lock keeps every update
+// (separate opens of the folder exclude each other, across threads as across processes).
+TEST(TransformsJson, ConcurrentUpdatesLoseNothing) {
+    const test::ScratchDir dir;
+    const std::string path = dir.file("views/transforms.json");
+    const Intrinsics k = perspective_intrinsics(16, 16, 0.7f);
+    std::vector<std::thread> writers;
+    std::atomic<int> failed{0};
+    for (int w = 0; w < 6; ++w)
+        writers.emplace_back([&, w] {
+            for (int i = 0; i < 15; ++i) {
+                const std::string name = std::to_string(w) + "_" + std::to_string(i) + ".png";
+                try {
+                    update_transforms_json(path, {frame(name, 0, k)});
+                } catch (const std::exception&) {
+                    ++failed;
+                }
+            }
+        });
+    for (std::thread& t : writers) t.join();
+    EXPECT_EQ(failed, 0);
+    EXPECT_EQ(read_transforms_json(path).size(), 90u);
 }
 
 }  // namespace
