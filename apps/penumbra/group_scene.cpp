@@ -24,6 +24,7 @@ SceneSetup& group_setup(const BatchJob& job, GroupScene& g) {
                              float(g.setup->width) / float(g.setup->height), job.options.orbit);
     }
     if (job.view >= 0) use_view(*g.setup, size_t(job.view), job.options);
+    ++g.setup->images;
     return *g.setup;
 }
 

@@ -125,14 +125,16 @@ void print_image_report(const ImageReport& r) {
     std::fprintf(stderr,
                  "%s -> %s%s%s%s\n"
                  "  %dx%d, %u spp%s, integrator %s, camera '%s'\n"
-                 "  load %s, build %s (%zu meshes, %zu instances), render %s, write %s\n"
+                 "  load %s, build %s (%zu meshes, %zu instances%s), render %s, write %s\n"
                  "  %.2f M rays/s (%llu rays), %.2f M samples/s, peak memory %s%s\n",
                  r.scene.c_str(), r.output.c_str(), r.preview.empty() ? "" : " + ",
                  r.preview.c_str(), stats.interrupted ? " (partial)" : "", setup.width,
                  setup.height, stats.spp, spp_note.c_str(), render_option("integrator").get(r.o).c_str(),
                  setup.camera_desc.name.c_str(), format_duration(setup.load_seconds).c_str(),
                  format_duration(setup.build_seconds).c_str(), setup.scene.objects.size(),
-                 setup.scene.instances.size(), format_duration(stats.seconds).c_str(),
+                 setup.scene.instances.size(),
+                 setup.images > 1 ? "; loaded for an earlier view" : "",
+                 format_duration(stats.seconds).c_str(),
                  format_duration(r.write_seconds).c_str(),
                  stats.seconds > 0 ? stats.rays / stats.seconds / 1e6 : 0.0,
                  static_cast<unsigned long long>(stats.rays),

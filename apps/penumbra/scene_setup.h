@@ -37,6 +37,7 @@ struct SceneSetup {
     // were converted into its working space at load; outputs go through it.
     std::unique_ptr<ColorPipeline> color;
     double load_seconds = 0, build_seconds = 0;
+    size_t images = 0;  // images set up from this load so far (group_setup counts them)
 
     // Refers to this setup: keep it alive (and in place) while rendering.
     RenderContext context() const;
