@@ -13,6 +13,7 @@
 #include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "support/cli_process.h"
 #include "support/exr_pixels.h"
@@ -388,6 +389,41 @@ TEST(ViewsCli, ResumedBatchesKeepEveryViewInTransformsJson) {
     ASSERT_EQ(run_penumbra(args).status, 0);
     std::ifstream in(dir.file("out/markers/transforms.json"));
     EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), before);
+}
+
+// On the farm, tasks of two views each render the orbit's images as `render --job` does,
+// and the tasks, run at once, each add their views to one transforms.json.
+TEST(ViewsCli, FarmTasksShareTransformsJson) {
+    const test::ScratchDir dir;
+    write_marker_scene(dir);
+    auto job = [&](const std::string& name, const std::string& out) {
+        return dir.write(name, R"({"defaults": {"width": 32, "height": 32, "spp": 2},
+            "jobs": [{"scene": "markers.gltf", "views": "orbit:4", "frames_per_task": 2,
+                      "output": ")" +
+                                   out + R"(/{view}.exr"}]})");
+    };
+    const std::string ref_job = job("ref.json", "ref"), farm_job = job("farm.json", "farm");
+    ASSERT_EQ(run_penumbra({"render", "--job", ref_job, "-q"}).status, 0);
+    {
+        test::CliProcess a({"farm", "task", farm_job, "--index", "0"});
+        test::CliProcess b({"farm", "task", farm_job, "--index", "1"});
+        const test::CliResult ra = a.wait(), rb = b.wait();
+        ASSERT_EQ(ra.status, 0) << ra.output;
+        ASSERT_EQ(rb.status, 0) << rb.output;
+    }
+    const json t = read_json(dir.file("farm/transforms.json"));
+    ASSERT_EQ(t.at("frames").size(), 4u);
+    std::set<std::string> files;
+    for (const json& f : t["frames"]) files.insert(f["file_path"].get<std::string>());
+    EXPECT_EQ(files, (std::set<std::string>{"0000.png", "0001.png", "0002.png", "0003.png"}));
+    const json ref = read_json(dir.file("ref/transforms.json"));
+    for (const json& f : ref["frames"]) {
+        const std::string name = f["file_path"].get<std::string>();
+        for (const json& g : t["frames"])
+            if (g["file_path"] == name) EXPECT_EQ(g["transform_matrix"], f["transform_matrix"]);
+        const std::string exr = name.substr(0, 4) + ".exr";
+        EXPECT_TRUE(test::same_pixels(dir.file("ref/" + exr), dir.file("farm/" + exr))) << exr;
+    }
 }
 
 TEST(ViewsCli, BadViewsFailBeforeRenderingNamingTheOptionOrFile) {
