@@ -74,7 +74,10 @@ JobSettings read_settings(const json& object, const std::string& where, const fs
             // "builtin" (--ocio-config) names the built-in config, not a file.
             const bool is_choice = std::find(d->choices.begin(), d->choices.end(), text) !=
                                    d->choices.end();
-            if (d->kind == OptionKind::Path && !is_choice && fs::path(text).is_relative())
+            const bool is_keyword =
+                !d->keyword_prefix.empty() && text.rfind(d->keyword_prefix, 0) == 0;
+            if (d->kind == OptionKind::Path && !is_choice && !is_keyword &&
+                fs::path(text).is_relative())
                 text = (base / text).lexically_normal().string();
             d->set(scratch, text);
             settings.push_back({d, text});

@@ -6,6 +6,7 @@
 #include "job/aov_list.h"
 #include "job/job_file.h"
 #include "job/option_builders.h"
+#include "job/view_list.h"
 
 namespace penumbra {
 
@@ -47,8 +48,9 @@ void add_batch_options(std::vector<OptionDecl>& t) {
                      FIELD(out_dir)));
     t.push_back(text({"name", "name", "", kNotPixels, kRender,
                       "Output name template: {scene} (file stem), {camera} (name), {frame} (4 "
-                      "digits), {index} (position in the batch); default {scene}.exr, or "
-                      "{scene}_{frame}.exr with --frames"},
+                      "digits), {view} (4 digits), {index} (position in the batch); default "
+                      "{scene}.exr, {scene}_{frame}.exr with --frames, {scene}/{view}.exr "
+                      "with --views"},
                      FIELD(name)));
     OptionDecl frames = timing(text({"frames", "frames", "", kNotPixels, kRender,
                                      "Render these frames (e.g. 1-48, 1-48:2, 1,5,10-12), one "
@@ -85,6 +87,44 @@ void add_batch_options(std::vector<OptionDecl>& t) {
                              "penumbra farm: consecutive frames of an entry rendered by one "
                              "task"},
                             FIELD(frames_per_task), 1, 1 << 20));
+}
+
+// Many views of one scene: an orbit or a cameras file, one image each.
+void add_view_options(std::vector<OptionDecl>& t) {
+    OptionDecl views = path({"views", "views", "penumbra:views", kPixels, kRender,
+                             "One image per view, all from one load of the scene: orbit:N (N "
+                             "views evenly around the vertical axis, +Y, through the centre "
+                             "of the scene's bounds) or a JSON file of cameras ([{\"position\": "
+                             "[x,y,z], \"look_at\": [x,y,z], \"up\": [0,1,0], \"yfov\": "
+                             "degrees} or {\"matrix\": 4x4 camera-to-world rows}, ...]); "
+                             "writes transforms.json (NeRF convention) beside the images",
+                             Header::WhenSet},
+                            FIELD(views));
+    views.keyword_prefix = "orbit:";
+    views.set = [](RenderCommandOptions& o, const std::string& spec) {
+        check_views_spec(spec);  // throws std::invalid_argument saying what is wrong
+        o.views = spec;
+    };
+    t.push_back(views);
+    t.push_back(number<float>({"orbit-elevation", "orbit_elevation", "", kPixels, kRender,
+                               "--views orbit:N: degrees above the horizontal plane through "
+                               "the scene's centre"},
+                              FIELD(orbit.elevation), -89, 89));
+    t.push_back(number<float>({"orbit-distance", "orbit_distance", "", kPixels, kRender,
+                               "--views orbit:N: distance from the scene's centre (0: framed "
+                               "as the default camera frames the scene's bounds)"},
+                              FIELD(orbit.distance), 0, kInf));
+    t.push_back(number<float>({"orbit-fov", "orbit_fov", "", kPixels, kRender,
+                               "--views: vertical field of view in degrees, of the orbit and "
+                               "of cameras-file views that give no yfov"},
+                              FIELD(orbit.yfov), 0, 179, true));
+    t.push_back(number<float>({"orbit-jitter", "orbit_jitter", "", kPixels, kRender,
+                               "--views orbit:N: move each view's azimuth and elevation by a "
+                               "random angle of up to this many degrees (from --orbit-seed)"},
+                              FIELD(orbit.jitter), 0, 180));
+    t.push_back(number<uint64_t>({"orbit-seed", "orbit_seed", "", kPixels, kRender,
+                                  "--orbit-jitter's seed: the same seed gives the same cameras"},
+                                 FIELD(orbit.seed), 0, kInf));
 }
 
 // The instant or interval of the animation the image exposes.
@@ -444,6 +484,7 @@ void add_output_options(std::vector<OptionDecl>& t) {
 std::vector<OptionDecl> make_table() {
     std::vector<OptionDecl> t;
     add_batch_options(t);
+    add_view_options(t);
     add_timeline_options(t);
     add_frame_options(t);
     add_method_options(t);

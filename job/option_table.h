@@ -42,6 +42,9 @@ struct OptionDecl {
     std::vector<std::string> choices;  // Choice: the names, in the order of the help
     int count = 1;                     // Numbers: how many
     bool existing_file = false;        // Path: must name an existing file (or a choice)
+    // Path: values starting with this are not file names ("orbit:" of --views), so a job
+    // file leaves them as they are instead of resolving them against its folder.
+    std::string keyword_prefix;
     // A frame, frame list, time or shutter interval: a job entry giving one replaces all
     // the timing it inherits.
     bool timing = false;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/accel/accel.h"
+#include "core/camera/orbit_cameras.h"
 #include "core/film/filter.h"
 #include "core/lights/default_lights.h"
 #include "core/lights/light_set.h"
@@ -45,9 +46,15 @@ struct RenderCommandOptions {
     std::vector<std::string> scenes;
     std::string output;   // -o: a file, or a name template when the batch has several images
     std::string out_dir = "out";
-    std::string name;      // name template in out_dir; empty: {scene}.exr ({scene}_{frame})
+    // Name template in out_dir; empty: {scene}.exr, {scene}_{frame}.exr with frames,
+    // {scene}/{view}.exr with views.
+    std::string name;
     std::string job_file;  // JSON batch description
     std::string frames;    // "1-48", "3", "1,5,10-12"
+    // "orbit:N" or a cameras JSON file (job/view_list.h): one image per view, all from
+    // one load of the scene; empty: the file's camera.
+    std::string views;
+    OrbitSettings orbit;
     TimelineSettings timeline;  // a batch sets `frame` for each of `frames`
     double time_limit = 0;      // seconds per image; 0: none
     bool overwrite = false;     // re-render images whose complete output exists

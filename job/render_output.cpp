@@ -39,11 +39,15 @@ std::string expand_output_name(const std::string& pattern, const OutputNameField
             char buf[16];
             std::snprintf(buf, sizeof buf, "%04d", f.frame);
             out += buf;
+        } else if (key == "view") {
+            char buf[16];
+            std::snprintf(buf, sizeof buf, "%04d", f.view);
+            out += buf;
         } else if (key == "index") {
             out += std::to_string(f.index);
         } else {
             throw std::invalid_argument("name '" + pattern + "': unknown placeholder {" + key +
-                                        "} (expected {scene}, {camera}, {frame}, {index})");
+                                        "} (expected {scene}, {camera}, {frame}, {view}, {index})");
         }
         i = close;
     }

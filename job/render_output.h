@@ -1,5 +1,5 @@
 // Where a batch writes each image: output name templates with {scene}, {camera},
-// {frame} and {index}; and whether an existing output is a finished render (a readable
+// {frame}, {view} and {index}; and whether an existing output is a finished render (a readable
 // image not marked partial), which is what lets an interrupted batch resume.
 #pragma once
 
@@ -13,6 +13,7 @@ struct OutputNameFields {
     std::string camera;  // the camera's name
     int frame = 0;       // written as at least 4 digits: 0007
     size_t index = 0;    // the image's position in the batch, from 0
+    int view = 0;        // the view's index (--views), as at least 4 digits
 };
 
 // Replaces each placeholder; characters that are not safe in a file name ('/', '\\',

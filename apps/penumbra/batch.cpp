@@ -67,26 +67,55 @@ void validate(const RenderCommandOptions& o, const std::string& where) {
     }
 }
 
-// One job per frame of the options' frame list, or one for the options' time.
+std::string default_name(const RenderCommandOptions& o) {
+    if (!o.views.empty())
+        return o.frames.empty() ? "{scene}/{view}.exr" : "{scene}/{view}_{frame}.exr";
+    return o.frames.empty() ? "{scene}.exr" : "{scene}_{frame}.exr";
+}
+
+// The entry's views, read once for all its jobs; null without --views. Several views
+// need a name that tells them apart.
+std::shared_ptr<const ViewList> entry_views(const RenderCommandOptions& o,
+                                            const std::string& where) {
+    if (o.views.empty()) return nullptr;
+    auto views = std::make_shared<const ViewList>(read_views(o.views));
+    const std::string& name = o.output.empty() ? o.name : o.output;
+    if (views->size() > 1 && !uses_placeholder(name, "view") && !uses_placeholder(name, "camera") &&
+        !uses_placeholder(name, "index"))
+        throw SceneError((where.empty() ? std::string("--views") : where) + ": " +
+                         std::to_string(views->size()) + " views would all write '" + name +
+                         "'; add {view}, {camera} or {index} to the name");
+    if (!o.camera.empty())
+        throw SceneError((where.empty() ? std::string("--views") : where) +
+                         ": the views replace the file's camera; drop --camera '" + o.camera +
+                         "'");
+    return views;
+}
+
+// One job per view (if any) of each frame of the options' frame list, or of the
+// options' time.
 void add_jobs(const std::string& scene, const RenderCommandOptions& o, const std::string& where,
               std::vector<BatchJob>& jobs) {
     BatchJob job{scene, o, where, 0};
-    if (job.options.name.empty())
-        job.options.name = o.frames.empty() ? "{scene}.exr" : "{scene}_{frame}.exr";
+    if (job.options.name.empty()) job.options.name = default_name(o);
     validate(job.options, where.empty() ? "options" : where);
-    if (o.frames.empty()) {
-        jobs.push_back(job);
-        return;
-    }
+    job.views = entry_views(job.options, where);
     std::vector<int> frames;
     try {
-        frames = parse_frame_list(o.frames);
+        if (!o.frames.empty()) frames = parse_frame_list(o.frames);
     } catch (const std::invalid_argument& e) {
         throw SceneError((where.empty() ? std::string("--frames") : where) + ": " + e.what());
     }
+    const bool framed = !frames.empty();
+    if (!framed) frames.push_back(0);
     for (int f : frames) {
-        job.options.timeline.frame = f;
-        jobs.push_back(job);
+        if (framed) job.options.timeline.frame = f;
+        job.group = jobs.empty() ? 0 : jobs.back().group + 1;
+        const size_t views = job.views ? job.views->size() : 0;
+        for (size_t v = 0; v < std::max<size_t>(views, 1); ++v) {
+            job.view = job.views ? int(v) : -1;
+            jobs.push_back(job);
+        }
     }
 }
 
@@ -116,14 +145,15 @@ std::vector<BatchJob> plan_batch(const RenderCommandOptions& o) {
 
 bool output_needs_camera(const BatchJob& job) {
     const RenderCommandOptions& o = job.options;
-    return uses_placeholder(o.output.empty() ? o.name : o.output, "camera");
+    return job.view < 0 && uses_placeholder(o.output.empty() ? o.name : o.output, "camera");
 }
 
 std::string output_path(const BatchJob& job, const std::string& camera) {
     const RenderCommandOptions& o = job.options;
     OutputNameFields fields;
     fields.scene = fs::path(job.scene).stem().string();
-    fields.camera = camera;
+    fields.camera = job.view >= 0 ? job.views->name(size_t(job.view)) : camera;
+    fields.view = std::max(job.view, 0);
     // Without a frame, {frame} is the frame the shutter opens on.
     const TimelineSettings& t = o.timeline;
     fields.frame = t.frame ? *t.frame

@@ -3,12 +3,14 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "apps/penumbra/render_command.h"
+#include "job/view_list.h"
 
 namespace penumbra {
 
@@ -20,14 +22,20 @@ struct BatchJob {
     // A farm task renders one row band of options.bands into band_output_path(); -1: the
     // whole image (`render --job` always renders whole images).
     int band = -1;
+    // --views: this image's view (-1: none) among every view of its entry.
+    int view = -1;
+    std::shared_ptr<const ViewList> views;
+    // Consecutive jobs of one group (the views of one frame of one entry) render from one
+    // loaded scene and one accelerator; only the camera changes between them.
+    size_t group = 0;
 };
 
-// Expands scenes x frames and the job file's entries, in order. Throws SceneError for a
+// Expands scenes x frames x views and the job file's entries, in order. Throws SceneError for a
 // bad job file, frame list or option value, before anything renders.
 std::vector<BatchJob> plan_batch(const RenderCommandOptions& o);
 
 // The job's output: -o or the job's "output" (both may hold placeholders), else
-// out_dir/name. The camera name is only known once the scene is loaded.
+// out_dir/name. The camera name is only known once the scene is loaded, except a view's.
 std::string output_path(const BatchJob& job, const std::string& camera);
 bool output_needs_camera(const BatchJob& job);
 

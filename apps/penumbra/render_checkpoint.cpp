@@ -37,6 +37,14 @@ std::string render_fingerprint(const BatchJob& job, const SceneSetup& setup,
       << ropt.row_end << " shutter=" << setup.scene.shutter_open << "-"
       << setup.scene.shutter_close << " time=" << ropt.time << " "
       << pixel_options_text(job.options);
+    // A view's camera comes from the bounds or a file, not from the options' text alone.
+    if (job.view >= 0) {
+        const Mat4& m = setup.camera_desc.to_world.matrix();
+        f << " view=" << job.view << " camera=";
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 4; ++c) f << m.m[r][c] << (r == 3 && c == 3 ? "" : ",");
+        f << " yfov=" << setup.camera_desc.yfov;
+    }
     return f.str();
 }
 

@@ -12,6 +12,7 @@
 
 #include "apps/penumbra/batch.h"
 #include "apps/penumbra/denoise_step.h"
+#include "apps/penumbra/group_scene.h"
 #include "apps/penumbra/interrupt.h"
 #include "apps/penumbra/light_check.h"
 #include "apps/penumbra/option_cli.h"
@@ -19,6 +20,7 @@
 #include "apps/penumbra/render_checkpoint.h"
 #include "apps/penumbra/render_metadata.h"
 #include "apps/penumbra/scene_setup.h"
+#include "apps/penumbra/view_transforms.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/progress.h"
@@ -73,7 +75,7 @@ bool claim_output(const BatchJob& job, const std::string& output, BatchState& st
     const std::string key = fs::absolute(output).lexically_normal().string();
     if (!state.claimed.insert(key).second)
         throw SceneError(output + ": another image of this batch already writes it; add "
-                                  "{frame}, {camera} or {index} to --name");
+                                  "{frame}, {view}, {camera} or {index} to --name");
     if (!job.options.overwrite && fs::exists(output) && is_finished_render(output)) {
         result.status = JobStatus::Skipped;
         result.message = "exists (--overwrite renders it again)";
@@ -123,14 +125,16 @@ void print_image_report(const ImageReport& r) {
     std::fprintf(stderr,
                  "%s -> %s%s%s%s\n"
                  "  %dx%d, %u spp%s, integrator %s, camera '%s'\n"
-                 "  load %s, build %s (%zu meshes, %zu instances), render %s, write %s\n"
+                 "  load %s, build %s (%zu meshes, %zu instances%s), render %s, write %s\n"
                  "  %.2f M rays/s (%llu rays), %.2f M samples/s, peak memory %s%s\n",
                  r.scene.c_str(), r.output.c_str(), r.preview.empty() ? "" : " + ",
                  r.preview.c_str(), stats.interrupted ? " (partial)" : "", setup.width,
                  setup.height, stats.spp, spp_note.c_str(), render_option("integrator").get(r.o).c_str(),
                  setup.camera_desc.name.c_str(), format_duration(setup.load_seconds).c_str(),
                  format_duration(setup.build_seconds).c_str(), setup.scene.objects.size(),
-                 setup.scene.instances.size(), format_duration(stats.seconds).c_str(),
+                 setup.scene.instances.size(),
+                 setup.images > 1 ? "; loaded for an earlier view" : "",
+                 format_duration(stats.seconds).c_str(),
                  format_duration(r.write_seconds).c_str(),
                  stats.seconds > 0 ? stats.rays / stats.seconds / 1e6 : 0.0,
                  static_cast<unsigned long long>(stats.rays),
@@ -156,6 +160,7 @@ RenderOptions job_render_options(const BatchJob& job, int height, BatchState& st
     const RenderCommandOptions& o = job.options;
     RenderOptions ropt = render_options_for(o, fs::path(job.scene).filename().string());
     if (o.timeline.frame) ropt.label += " frame " + std::to_string(*o.timeline.frame);
+    if (job.view >= 0) ropt.label += " " + job.views->name(size_t(job.view));
     if (job.band >= 0) {
         std::tie(ropt.row_begin, ropt.row_end) = band_rows(height, job.band, o.bands);
         ropt.label += " band " + std::to_string(job.band + 1) + "/" + std::to_string(o.bands);
@@ -268,13 +273,12 @@ void write_job_outputs(const BatchJob& job, const SceneSetup& setup, const Film&
     if (warning) LOG_WARNING(output << ": " << warning->message);
 }
 
-void render_job(const BatchJob& job, BatchState& state, JobResult& result) {
+void render_job(const BatchJob& job, GroupScene& scene, BatchState& state, JobResult& result) {
     const RenderCommandOptions& o = job.options;
-    const std::string& path = job.scene;
     // Without {camera} the output name is known before loading: skip without loading.
     if (!output_needs_camera(job) && !claim_output(job, output_path(job, ""), state, result))
         return;
-    const std::unique_ptr<SceneSetup> setup = setup_scene(o, path);
+    SceneSetup* const setup = &group_setup(job, scene);
     const CameraDesc& cam_desc = setup->camera_desc;
     if (output_needs_camera(job) &&
         !claim_output(job, output_path(job, cam_desc.name), state, result))
@@ -347,7 +351,10 @@ int run_render_jobs(const std::vector<BatchJob>& jobs, const RenderCommandOption
     const InterruptScope interrupt;
     BatchProgress progress(jobs.size(), !o.quiet && jobs.size() > 1);
     BatchState state{progress, interrupt.count(), {}};
-    for (const BatchJob& job : jobs) {
+    GroupScene scene;
+    const size_t first_result = results.size();
+    for (size_t i = 0; i < jobs.size(); ++i) {
+        const BatchJob& job = jobs[i];
         JobResult r;
         r.scene = job.scene;
         r.frame = job.options.timeline.frame.value_or(-1);
@@ -356,7 +363,7 @@ int run_render_jobs(const std::vector<BatchJob>& jobs, const RenderCommandOption
             r.message = "interrupted before it started";
         } else {
             try {
-                render_job(job, state, r);
+                render_job(job, scene, state, r);
             } catch (const std::exception& e) {
                 // One bad scene does not stop the batch.
                 std::fprintf(stderr, "error: %s\n", e.what());
@@ -369,6 +376,11 @@ int run_render_jobs(const std::vector<BatchJob>& jobs, const RenderCommandOption
         }
         progress.job_finished(r.rays);
         results.push_back(r);
+        if (i + 1 == jobs.size() || jobs[i + 1].group != job.group) {
+            if (scene.setup && scene.group == job.group)
+                write_view_transforms(jobs, results, first_result, job.group, *scene.setup);
+            scene.setup.reset();
+        }
     }
     const auto failed = std::count_if(results.begin(), results.end(), [](const JobResult& r) {
         return r.status == JobStatus::Failed;

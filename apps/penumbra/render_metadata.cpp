@@ -36,6 +36,7 @@ Metadata render_metadata(const RenderCommandOptions& o, const std::string& scene
         {"penumbra:nonfinite_samples", std::to_string(stats.nonfinite_samples)},
     };
     metadata.insert(metadata.end(), in_effect.begin(), in_effect.end());
+    if (!o.views.empty()) metadata.push_back({"penumbra:view", cam_desc.name});
     if (o.target_error > 0) {
         // What the adaptive render did: mean samples per pixel, pixels left unconverged.
         metadata.push_back(

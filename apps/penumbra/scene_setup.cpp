@@ -137,10 +137,11 @@ GltfLoadStats load_scene(const RenderCommandOptions& o, SceneSetup& s) {
 // Image size: what the user asked, completed from the camera's aspect ratio.
 void choose_camera_and_size(const RenderCommandOptions& o, SceneSetup& s) {
     const Scene& scene = s.scene;
+    // The views (--views) replace the file's cameras.
     const CameraDesc* file_cam = nullptr;
-    if (!o.camera.empty())
+    if (o.views.empty() && !o.camera.empty())
         file_cam = find_camera(scene, o.camera);
-    else if (!scene.cameras.empty())
+    else if (o.views.empty() && !scene.cameras.empty())
         file_cam = &scene.cameras[0];
     float aspect = file_cam && file_cam->aspect_ratio > 0 ? file_cam->aspect_ratio
                    : file_cam && file_cam->type == ProjectionType::Orthographic
@@ -151,7 +152,7 @@ void choose_camera_and_size(const RenderCommandOptions& o, SceneSetup& s) {
                       : (o.height ? std::max(1, int(std::lround(o.height * aspect))) : 640);
     s.height = o.height ? o.height : std::max(1, int(std::lround(s.width / aspect)));
     s.camera_desc = file_cam ? *file_cam : default_camera(scene.bounds(), aspect);
-    if (!file_cam)
+    if (!file_cam && o.views.empty())
         LOG_INFO(s.path << ": no camera in the file; using one that frames the scene");
 }
 
@@ -244,6 +245,12 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
         !s->lights->environment())
         add_default_lights_if_view_dark(*s, o, lighting.options);
     return s;
+}
+
+void use_view(SceneSetup& s, size_t index, const RenderCommandOptions& o) {
+    s.camera_desc = s.views.at(index);
+    apply_lens_options(o.lens, s.path, s.width, s.height, s.scene, *s.accel, s.camera_desc);
+    s.camera = make_camera(s.camera_desc, s.width, s.height);
 }
 
 RenderOptions render_options_for(const RenderCommandOptions& o, const std::string& label) {

@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "apps/penumbra/render_command.h"
 #include "core/accel/accel.h"
@@ -20,6 +21,10 @@ struct SceneSetup {
     std::string path;
     Scene scene;
     CameraDesc camera_desc;  // after lens overrides
+    // --views: every view's camera, before lens overrides (use_view applies them). The
+    // default lights and the dark-view check follow the default camera, so every view
+    // sees the scene lit alike.
+    std::vector<CameraDesc> views;
     int width = 0, height = 0;
     std::unique_ptr<LightSet> lights;
     std::unique_ptr<Accel> accel;
@@ -32,6 +37,7 @@ struct SceneSetup {
     // were converted into its working space at load; outputs go through it.
     std::unique_ptr<ColorPipeline> color;
     double load_seconds = 0, build_seconds = 0;
+    size_t images = 0;  // images set up from this load so far (group_setup counts them)
 
     // Refers to this setup: keep it alive (and in place) while rendering.
     RenderContext context() const;
@@ -40,6 +46,10 @@ struct SceneSetup {
 // Loads and prepares path as the options say. Throws SceneError for bad input. The
 // result refers to itself, hence the pointer.
 std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std::string& path);
+
+// Renders the next image through view `index` of setup.views: its lens overrides
+// applied and its camera built; the scene, lights and accelerator stay as they are.
+void use_view(SceneSetup& setup, size_t index, const RenderCommandOptions& o);
 
 // The render-loop options (samples, seed, sampler, filter, time, limits) from o.
 RenderOptions render_options_for(const RenderCommandOptions& o, const std::string& label);

@@ -20,6 +20,8 @@ TEST(RenderOutput, ExpandsPlaceholders) {
     EXPECT_EQ(expand_output_name("{index}-{scene}-{frame}-{index}", f),
               "3-cornell-box-0007-3");
     EXPECT_EQ(expand_output_name("out.exr", f), "out.exr");
+    EXPECT_EQ(expand_output_name("{scene}/{view}_{frame}.exr", {"s", "c", 2, 0, 41}),
+              "s/0041_0002.exr");
     EXPECT_EQ(expand_output_name("{frame}", {"s", "c", 12345, 0}), "12345");
     // Names from the file cannot escape the folder or hide control characters.
     EXPECT_EQ(expand_output_name("{camera}.exr", {"s", "../up\tcam", 0, 0}), ".._up_cam.exr");
