@@ -39,6 +39,8 @@ AovRecord first_hit_aovs(const Ray& camera_ray, const RenderContext& ctx, uint64
     rec.normal = s->sd.frame.n;
     rec.position = s->sp.p;
     rec.depth = length(s->sp.p - camera_ray.o);
+    rec.object = ctx.scene.instances[s->sp.instance].node;
+    rec.material = s->sp.material >= 0 ? s->sp.material : kDefaultMaterialId;
     return rec;
 }
 

@@ -5,9 +5,9 @@
 namespace penumbra {
 
 const std::vector<std::string>& aov_names() {
-    static const std::vector<std::string> names = {"albedo",   "normal",   "depth",
-                                                   "position", "variance", "samples",
-                                                   "error"};
+    static const std::vector<std::string> names = {"albedo",   "normal",    "depth",
+                                                   "position", "variance",  "samples",
+                                                   "error",    "object_id", "material_id"};
     return names;
 }
 

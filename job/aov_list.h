@@ -9,8 +9,8 @@
 
 namespace penumbra {
 
-// "albedo,normal,depth,position,variance,samples,error" (any subset, any order; "all"
-// for every one but error, which changes the sample streams). Throws
+// "albedo,normal,depth,position,variance,samples,error,object_id,material_id" (any subset,
+// any order; "all" for every one but error, which changes the sample streams). Throws
 // std::invalid_argument naming an unknown entry.
 AovSet parse_aovs(const std::string& list);
 // The names parse_aovs accepts, in Aov order.

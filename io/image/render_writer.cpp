@@ -35,6 +35,10 @@ const std::vector<AovLayout>& aov_layouts() {
         {Aov::Samples, "Samples", {"X"}, false, true},
         // Relative, so an exposure leaves it as it is.
         {Aov::Error, "Error", {"X"}, false, false},
+        // Integers in float channels, as Cycles writes IndexOB and IndexMA and Blender's
+        // compositor and Nuke read ID passes; 32-bit, exact to 2^24.
+        {Aov::ObjectId, "ObjectID", {"X"}, false, true},
+        {Aov::MaterialId, "MaterialID", {"X"}, false, true},
     };
     return list;
 }
@@ -91,8 +95,11 @@ Beauty denoised_beauty(const DenoisedBeauty& denoised, const Image& alpha, float
                             << alpha.width << "x" << alpha.height << "x" << alpha.channels
                             << " beauty");
     Image working = alpha;
+    // A pixel no camera ray covered (a transparent background's alpha 0) stays empty:
+    // the denoiser's neighbourhood would otherwise leak the object's colour into it.
     for (size_t p = 0; p < size_t(rgb.width) * rgb.height; ++p)
-        for (size_t c = 0; c < 3; ++c) working.pixels[p * 4 + c] = rgb.pixels[p * 3 + c];
+        for (size_t c = 0; c < 3; ++c)
+            working.pixels[p * 4 + c] = alpha.pixels[p * 4 + 3] == 0 ? 0.0f : rgb.pixels[p * 3 + c];
     return make_beauty(std::move(working), exposure, color);
 }
 

@@ -55,7 +55,8 @@ TEST(BlenderRoundTrip, CompositorSeesEveryAovAsANamedPass) {
     ASSERT_TRUE(std::regex_search(out, m, std::regex("PASSES ([^\\n]*)"))) << out;
     const std::string passes = " " + m[1].str() + " ";
     for (const char* p : {"Combined:RGBA", "Alpha:VALUE", "Albedo:RGBA", "Depth:VALUE",
-                          "Normal:RGBA", "Position:RGBA", "Variance:RGBA", "Samples:VALUE"})
+                          "Normal:RGBA", "Position:RGBA", "Variance:RGBA", "Samples:VALUE",
+                          "ObjectID:VALUE", "MaterialID:VALUE"})
         EXPECT_NE(passes.find(std::string(" ") + p + " "), std::string::npos)
             << p << " not among: " << passes;
 }
