@@ -41,6 +41,7 @@ struct Options {
     int threads = 0;
     AovSet aovs;
     bool two_passes = false;
+    double target_error = 0;  // adaptive sampling from 16 samples
 };
 
 Film render_scene(const Scene& scene, const Options& o) {
@@ -62,6 +63,8 @@ Film render_scene(const Scene& scene, const Options& o) {
     // samples, hold as stated (strata would only do better, unevenly).
     opt.sampler = SamplerType::Independent;
     opt.aovs = o.aovs;
+    opt.target_error = o.target_error;
+    opt.min_spp = 16;
     if (o.transparent) opt.aovs.add(Aov::Coverage);
     if (!o.two_passes) return render(ctx, camera, *integrator, opt);
     Film film(kSize, kSize, opt.aovs);
@@ -71,10 +74,10 @@ Film render_scene(const Scene& scene, const Options& o) {
 }
 
 // The quad left of kEdge, over the whole height.
-Scene edge_scene() {
+Scene edge_scene(float albedo = kAlbedo) {
     Scene scene;
     add_quad(scene, -10, kEdge - kSize / 2.0f, -10, 10, 0,
-             test::add_lambertian(scene, Spectrum(kAlbedo)));
+             test::add_lambertian(scene, Spectrum(albedo)));
     return scene;
 }
 
@@ -161,6 +164,25 @@ TEST(TransparentBackground, DirectAndBasicIntegratorsLeaveMissesBlack) {
             EXPECT_EQ(clear.at(1, y)[0], opaque.at(1, y)[0]);
             EXPECT_EQ(clear.at(1, y)[3], 1.0f);
         }
+    }
+}
+
+TEST(TransparentBackground, AdaptiveSamplingFollowsTheAlphasNoise) {
+    // A black quad: its colour is 0 on both sides of the edge, so only alpha tells that
+    // the edge column is uncertain. It goes on sampling; the empty and the covered columns
+    // out of its reach (adaptive sampling's windows spread activity 2 pixels), exact in
+    // colour and alpha, stop at the first 16 samples.
+    Options o;
+    o.spp = 256;
+    o.target_error = 0.05;
+    const Film film = render_scene(edge_scene(0), o);
+    const Image samples = film.resolve_aov(Aov::Samples), img = film.resolve();
+    for (int y = 0; y < kSize; ++y) {
+        EXPECT_EQ(samples.at(0, y)[0], 16.0f) << y;
+        EXPECT_EQ(samples.at(6, y)[0], 16.0f) << y;
+        EXPECT_GT(samples.at(3, y)[0], 16.0f) << y;
+        EXPECT_EQ(img.at(0, y)[3], 1.0f);
+        EXPECT_EQ(img.at(6, y)[3], 0.0f);
     }
 }
 
