@@ -152,6 +152,9 @@ void write_preview(const std::string& path, const Image& image, const ColorPipel
         if (alpha) bytes[p * 4 + 3] = byte(std::clamp(image.pixels[p * 4 + 3], 0.0f, 1.0f));
     }
     OIIO::ImageSpec spec(display.width, display.height, channels, OIIO::TypeDesc::UINT8);
+    // The colour is straight already: OIIO would otherwise take it as premultiplied and
+    // divide it by alpha once more.
+    if (alpha) spec.attribute("oiio:UnassociatedAlpha", 1);
     // Tells PNG readers the curve (an sRGB chunk); other displays' encodings have no
     // PNG tag OIIO would write, so they get none rather than a wrong one.
     std::string display_name = color.display();

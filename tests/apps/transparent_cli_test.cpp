@@ -94,7 +94,9 @@ TEST(TransparentCli, AlphaIsCoverageAndIdLayersHoldNodesAndMaterials) {
         EXPECT_EQ(spec.channelformat(spec.channelindex(c)), OIIO::TypeDesc::FLOAT) << c;
     EXPECT_EQ(spec.channelformat(spec.channelindex("R")), OIIO::TypeDesc::HALF);
     // The preview: straight colour with the alpha.
-    std::unique_ptr<OIIO::ImageInput> png = OIIO::ImageInput::open(dir.file("t.png"));
+    OIIO::ImageSpec straight;  // the file's bytes, not premultiplied while reading
+    straight.attribute("oiio:UnassociatedAlpha", 1);
+    std::unique_ptr<OIIO::ImageInput> png = OIIO::ImageInput::open(dir.file("t.png"), &straight);
     ASSERT_TRUE(png);
     ASSERT_EQ(png->spec().nchannels, 4);
     std::vector<unsigned char> bytes(16 * 16 * 4);
