@@ -407,9 +407,11 @@ void add_output_options(std::vector<OptionDecl>& t) {
                            "Extra EXR layers, comma-separated: albedo, normal, depth, position, "
                            "variance, samples, object_id, material_id (glTF node and material "
                            "index of the sample nearest each pixel's centre; -1: no hit, -2: "
-                           "the default material) (or all), and error (relative standard error "
+                           "the default material) (or all), error (relative standard error "
                            "from two independently seeded halves of the samples; it changes the "
-                           "noise, so 'all' leaves it out)"},
+                           "noise, so 'all' leaves it out), and crypto_object, crypto_material "
+                           "or cryptomatte for both (Cryptomatte layers of the glTF node and "
+                           "material names, with the manifest in the header; not in 'all')"},
                           FIELD(aovs));
     aov.set = [](RenderCommandOptions& o, const std::string& list) {
         parse_aovs(list);  // throws std::invalid_argument naming an unknown layer

@@ -29,15 +29,19 @@ enum class Aov : uint32_t {
     // a primitive without a material.
     ObjectId = 128,
     MaterialId = 256,
+    // Cryptomatte (core/film/cryptomatte.h) of the same first surface's glTF node name
+    // and material name: each pixel's IDs ranked by coverage, with anti-aliasing.
+    CryptoObject = 512,
+    CryptoMaterial = 1024,
     // Not an AOV of its own, and --aov does not name it (job/aov_list.h): the denoiser's input
     // (Film::denoise_input). The film keeps the guide features' sums and the beauty's
     // squares, over all samples and over the odd-indexed ones; like Error, it draws the
     // odd sample indices from a second sample stream.
-    Denoise = 512,
+    Denoise = 2048,
     // Not named either: a transparent background (--transparent-background). The film sums
     // each camera sample's coverage of geometry with the colour's weights, and its alpha
     // is their mean instead of 1.
-    Coverage = 1024,
+    Coverage = 4096,
 };
 
 // The ID layers' values where no sample hit anything, and for glTF's default material.
@@ -57,7 +61,8 @@ public:
     bool needs_first_hit() const {
         return (m_bits & (uint32_t(Aov::Albedo) | uint32_t(Aov::Normal) | uint32_t(Aov::Depth) |
                           uint32_t(Aov::Position) | uint32_t(Aov::ObjectId) |
-                          uint32_t(Aov::MaterialId))) != 0;
+                          uint32_t(Aov::MaterialId) | uint32_t(Aov::CryptoObject) |
+                          uint32_t(Aov::CryptoMaterial))) != 0;
     }
     bool has_ids() const { return has(Aov::ObjectId) || has(Aov::MaterialId); }
     // Error or denoising: the samples form two independently seeded halves.
@@ -87,8 +92,10 @@ struct AovRecord {
     Vec3 normal;
     Vec3 position;
     float depth = 0;
-    // The first surface's glTF node and material (Aov::ObjectId, Aov::MaterialId).
+    // The first surface's glTF node and material (Aov::ObjectId, Aov::MaterialId), and
+    // the Cryptomatte hashes of their names (read where hit).
     int32_t object = kNoHitId, material = kNoHitId;
+    uint32_t object_hash = 0, material_hash = 0;
     // Squared distance of the sample from the pixel's centre, in pixels: the ID layers
     // keep the nearest sample's IDs.
     float offset2 = 0;

@@ -55,6 +55,8 @@ Film::Film(int width, int height, AovSet aovs)
     if (aovs.has(Aov::Coverage)) m_aov.coverage.assign(n, 0.0);
     if (aovs.has(Aov::Coverage) && aovs.splits_halves()) m_aov.coverage_odd.assign(n, 0.0);
     if (aovs.has_ids()) m_aov.ids.assign(n, IdSample{});
+    if (aovs.has(Aov::CryptoObject)) m_aov.crypto_object.assign(n, CryptomatteSlots{});
+    if (aovs.has(Aov::CryptoMaterial)) m_aov.crypto_material.assign(n, CryptomatteSlots{});
     if (denoise) {
         m_aov.guide.assign(n, Guide{});
         m_aov.guide_odd.assign(n, Guide{});
@@ -88,6 +90,11 @@ void Film::add_sample(int x, int y, Spectrum L, float w, const AovRecord& aov) {
         m_aov.coverage[i] += double(aov.coverage) * w;
         if (aov.odd && !m_aov.coverage_odd.empty())
             m_aov.coverage_odd[i] += double(aov.coverage) * w;
+    }
+    // Coverage in the colour's weights: a sample the colour drops counts for no ID.
+    if (aov.hit && is_finite(L)) {
+        if (!m_aov.crypto_object.empty()) m_aov.crypto_object[i].add(aov.object_hash, w);
+        if (!m_aov.crypto_material.empty()) m_aov.crypto_material[i].add(aov.material_hash, w);
     }
     // Strictly nearer only: of equally near samples the first (in index order) stays.
     if (!m_aov.ids.empty() && aov.offset2 < m_aov.ids[i].offset2)
@@ -168,7 +175,8 @@ float Film::relative_error(int x, int y) const {
 Image Film::resolve_aov(Aov aov) const {
     const bool scalar = aov == Aov::Depth || aov == Aov::Samples || aov == Aov::Error ||
                         aov == Aov::ObjectId || aov == Aov::MaterialId;
-    Image img(m_width, m_height, scalar ? 1 : 3);
+    const bool crypto = aov == Aov::CryptoObject || aov == Aov::CryptoMaterial;
+    Image img(m_width, m_height, crypto ? 2 * kCryptomatteRanks : scalar ? 1 : 3);
     if (!m_aovs.has(aov)) return img;
     for (size_t i = 0; i < m_pixels.size(); ++i) {
         float* out = &img.pixels[i * img.channels];
@@ -207,6 +215,17 @@ Image Film::resolve_aov(Aov aov) const {
             case Aov::MaterialId:
                 out[0] = float(m_aov.ids[i].material);
                 break;
+            case Aov::CryptoObject:
+            case Aov::CryptoMaterial: {
+                const CryptomatteSlots& slots = aov == Aov::CryptoObject ? m_aov.crypto_object[i]
+                                                                         : m_aov.crypto_material[i];
+                const auto ranked = slots.ranked(m_pixels[i].weight);
+                for (int r = 0; r < kCryptomatteRanks; ++r) {
+                    out[2 * r] = ranked[size_t(r)].first;
+                    out[2 * r + 1] = ranked[size_t(r)].second;
+                }
+                break;
+            }
             case Aov::Denoise:
             case Aov::Coverage:
                 break;  // not images of their own: denoise_input(), resolve()'s alpha
@@ -283,7 +302,9 @@ std::vector<Film::Buffer> Film::buffers() {
             raw("guide_square", m_aov.guide_square),
             raw("coverage", m_aov.coverage),
             raw("coverage_odd", m_aov.coverage_odd),
-            raw("ids", m_aov.ids)};
+            raw("ids", m_aov.ids),
+            raw("crypto_object", m_aov.crypto_object),
+            raw("crypto_material", m_aov.crypto_material)};
 }
 
 uint64_t Film::nonfinite_samples() const {

@@ -11,6 +11,7 @@
 
 #include "core/denoise/denoise_input.h"
 #include "core/film/aov.h"
+#include "core/film/cryptomatte.h"
 #include "core/image.h"
 #include "core/math/vec.h"
 
@@ -46,6 +47,8 @@ public:
     // depth and position over the samples that hit (kNoHitDepth and 0 where none did).
     // Error is relative_error (1 channel). The IDs are those of the sample nearest the
     // pixel's centre (the earliest of equally near ones), as exact integers in floats.
+    // Cryptomatte gives 2 kCryptomatteRanks channels: per rank the ID (cryptomatte_float)
+    // and its coverage (its samples' weight over all the pixel's), largest first.
     // Variance is that of the pixel's mean: the weighted sample variance over the
     // effective sample count (sum w)^2 / sum w^2, less one; 0 below two samples.
     Image resolve_aov(Aov aov) const;
@@ -94,6 +97,8 @@ private:
         std::vector<double> coverage, coverage_odd;
         // ID layers: the IDs of the pixel's sample nearest its centre so far.
         std::vector<IdSample> ids;
+        // Cryptomatte: each pixel's IDs and their weights.
+        std::vector<CryptomatteSlots> crypto_object, crypto_material;
     };
     struct Pixel {
         double sum[3] = {0, 0, 0};

@@ -1,7 +1,7 @@
 // `render --transparent-background` and the ID layers end to end, on a file with known
-// geometry: an orthographic camera over 8 x 8 world units at 16 x 16 pixels (2 pixels a
-// unit) and a box filter, quad A (node 1, material 0) over columns 0-5 and quad B (node 2,
-// no material) over columns 6-11, both over rows 4-15; the rest is background. The EXR's alpha is
+// geometry (support/two_quads_scene.h) and a box filter: quad A (node 1, material 0) over
+// columns 0-5 and quad B (node 2, no material) over columns 6-11, both over rows 4-15; the
+// rest is background. The EXR's alpha is
 // the coverage and its colour 0 where nothing is; ObjectID.X and MaterialID.X are 32-bit floats
 // (even with --half) holding the nodes' and materials' indices; the header records the option; the
 // PNG preview carries the alpha; a denoised render keeps the film's alpha; and the farm's bands
@@ -10,41 +10,20 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 
+#include "core/film/cryptomatte.h"
 #include "support/cli_process.h"
 #include "support/exr_pixels.h"
 #include "support/gltf_builder.h"
+#include "support/two_quads_scene.h"
 
 namespace penumbra {
 namespace {
 
 using Args = std::vector<std::string>;
-
-std::string two_quads(const test::ScratchDir& dir) {
-    test::GltfBuilder b;
-    // World x from -4 to -1 (A) and -1 to 2 (B), y from -4 to 2, at z = 0, facing +z.
-    auto quad = [&](float x0, float x1) {
-        const int pos =
-            b.add<float>({x0, -4, 0, x1, -4, 0, x1, 2, 0, x0, 2, 0}, test::kFloat, "VEC3");
-        const int idx = b.add<uint16_t>({0, 1, 2, 0, 2, 3}, test::kUShort, "SCALAR");
-        return "{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
-               "},\"indices\":" + std::to_string(idx);
-    };
-    const std::string a = quad(-4, -1) + ",\"material\":0}", bq = quad(-1, 2) + "}";
-    const std::string members =
-        "\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.5,0.5,0.5,1],"
-        "\"metallicFactor\":0}}],"
-        "\"meshes\":[{\"primitives\":[" +
-        a + "]},{\"primitives\":[" + bq +
-        "]}],"
-        "\"cameras\":[{\"type\":\"orthographic\",\"orthographic\":{\"xmag\":4,\"ymag\":4,"
-        "\"znear\":0.1,\"zfar\":100}}],"
-        "\"nodes\":[{\"camera\":0,\"translation\":[0,0,5]},{\"mesh\":0},{\"mesh\":1}],"
-        "\"scenes\":[{\"nodes\":[0,1,2]}],\"scene\":0";
-    return b.write(dir, "quads.gltf", members, test::BufferStorage::DataUri);
-}
 
 Args render_args(const std::string& scene, const std::string& out, const Args& more) {
     Args args = {"render", scene, "-o", out, "--width", "16", "--height", "16", "--spp", "4"};
@@ -66,7 +45,7 @@ float at(const test::Pixels& p, const std::string& name, int x, int y) {
 
 TEST(TransparentCli, AlphaIsCoverageAndIdLayersHoldNodesAndMaterials) {
     const test::ScratchDir dir;
-    const std::string scene = two_quads(dir), exr = dir.file("t.exr");
+    const std::string scene = test::write_two_quads(dir), exr = dir.file("t.exr");
     const test::CliResult r = test::run_penumbra(render_args(
         scene, exr, {"--transparent-background", "--aov", "object_id,material_id", "--half"}));
     ASSERT_EQ(r.status, 0) << r.output;
@@ -106,9 +85,49 @@ TEST(TransparentCli, AlphaIsCoverageAndIdLayersHoldNodesAndMaterials) {
     EXPECT_GT(bytes[(8 * 16 + 2) * 4 + 0], 100);  // its colour, not premultiplied
 }
 
+TEST(TransparentCli, CryptomatteLayersRankTheNamesHashesWithTheirCoverage) {
+    const test::ScratchDir dir;
+    const std::string scene = test::write_two_quads(dir), exr = dir.file("c.exr");
+    const test::CliResult r = test::run_penumbra(
+        render_args(scene, exr, {"--aov", "cryptomatte", "--half", "--no-preview"}));
+    ASSERT_EQ(r.status, 0) << r.output;
+    const test::Pixels p = test::read_pixels(exr);
+    const float left = cryptomatte_float(cryptomatte_hash("left")),
+                right = cryptomatte_float(cryptomatte_hash("right")),
+                grey = cryptomatte_float(cryptomatte_hash("grey")),
+                plain = cryptomatte_float(cryptomatte_hash("default"));
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+            const bool miss = test::two_quads_miss(x, y), l = test::two_quads_left(x, y);
+            // Every sample of a pixel sees one quad or none (box filter, edges on pixel
+            // borders): rank 0 covers it all, the other ranks are empty.
+            EXPECT_EQ(at(p, "CryptoObject00.R", x, y), miss ? 0 : l ? left : right);
+            EXPECT_EQ(at(p, "CryptoObject00.G", x, y), miss ? 0.0f : 1.0f);
+            EXPECT_EQ(at(p, "CryptoMaterial00.R", x, y), miss ? 0 : l ? grey : plain);
+            EXPECT_EQ(at(p, "CryptoObject00.B", x, y), 0.0f);
+            EXPECT_EQ(at(p, "CryptoMaterial02.A", x, y), 0.0f);
+        }
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(exr);
+    ASSERT_TRUE(in);
+    const OIIO::ImageSpec& spec = in->spec();
+    EXPECT_EQ(spec.get_string_attribute(cryptomatte_key("CryptoObject", "name")), "CryptoObject");
+    const std::string manifest =
+        spec.get_string_attribute(cryptomatte_key("CryptoObject", "manifest"));
+    char left_hex[16];
+    std::snprintf(left_hex, sizeof left_hex, "%08x", cryptomatte_hash("left"));
+    EXPECT_NE(manifest.find("\"left\":\"" + std::string(left_hex) + "\""), std::string::npos)
+        << manifest;
+    EXPECT_NE(manifest.find("\"right\":"), std::string::npos) << manifest;
+    EXPECT_NE(spec.get_string_attribute(cryptomatte_key("CryptoMaterial", "manifest"))
+                  .find("\"default\":\"42c9679f\""),
+              std::string::npos);
+    // IDs stay 32-bit under --half.
+    EXPECT_EQ(spec.channelformat(spec.channelindex("CryptoObject00.R")), OIIO::TypeDesc::FLOAT);
+}
+
 TEST(TransparentCli, WithoutTheOptionAlphaIsOneAndThePreviewRgb) {
     const test::ScratchDir dir;
-    const std::string scene = two_quads(dir), exr = dir.file("o.exr");
+    const std::string scene = test::write_two_quads(dir), exr = dir.file("o.exr");
     const test::CliResult r = test::run_penumbra(render_args(scene, exr, {}));
     ASSERT_EQ(r.status, 0) << r.output;
     const test::Pixels p = test::read_pixels(exr);
@@ -123,7 +142,7 @@ TEST(TransparentCli, WithoutTheOptionAlphaIsOneAndThePreviewRgb) {
 
 TEST(TransparentCli, DenoisingKeepsTheFilmsAlphaAndAnEmptyBackground) {
     const test::ScratchDir dir;
-    const std::string scene = two_quads(dir);
+    const std::string scene = test::write_two_quads(dir);
     // The error AOV splits the samples as the denoiser does: the same film, not denoised.
     const test::CliResult d = test::run_penumbra(render_args(
         scene, dir.file("d.exr"), {"--transparent-background", "--denoise", "--no-preview"}));
@@ -144,15 +163,20 @@ TEST(TransparentCli, DenoisingKeepsTheFilmsAlphaAndAnEmptyBackground) {
 
 TEST(TransparentCli, FarmBandsMergeToTheImagesOfOneMachine) {
     const test::ScratchDir dir;
-    const std::string scene = two_quads(dir);
+    const std::string scene = test::write_two_quads(dir);
     auto job = [&](const std::string& name, const std::string& out_dir) {
-        return dir.write(name, R"({
+        return dir.write(
+            name,
+            R"({
   "defaults": {"width": 16, "height": 16, "spp": 4, "env_color": [1, 1, 1], "filter": "box",
                "transparent_background": true, "out_dir": ")" +
-                                   out_dir + R"("},
+                out_dir + R"("},
   "jobs": [
-    {"scene": ")" + scene + R"(", "bands": 3, "name": "ids.exr", "aov": "object_id,material_id"},
-    {"scene": ")" + scene + R"(", "bands": 2, "name": "denoised.exr", "denoise": true}
+    {"scene": ")" +
+                scene +
+                R"(", "bands": 3, "name": "ids.exr", "aov": "object_id,material_id,cryptomatte"},
+    {"scene": ")" +
+                scene + R"(", "bands": 2, "name": "denoised.exr", "denoise": true}
   ]
 })");
     };

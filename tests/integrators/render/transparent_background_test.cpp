@@ -293,10 +293,10 @@ TEST(TransparentBackground, IdLayersHoldTheFirstVisibleSurfacesNodeAndMaterial) 
         }
 }
 
-TEST(TransparentBackground, IdsAndAlphaAreBitwiseIdenticalForAnyThreadCountAndPasses) {
+TEST(TransparentBackground, IdsCryptomatteAndAlphaAreBitwiseIdenticalForAnyThreadsAndPasses) {
     Options o;
     o.spp = 16;
-    o.aovs = {Aov::ObjectId, Aov::MaterialId};
+    o.aovs = {Aov::ObjectId, Aov::MaterialId, Aov::CryptoObject, Aov::CryptoMaterial};
     o.threads = 1;
     const Film a = render_scene(id_scene(), o);
     o.threads = 2;
@@ -307,6 +307,8 @@ TEST(TransparentBackground, IdsAndAlphaAreBitwiseIdenticalForAnyThreadCountAndPa
         EXPECT_EQ(a.resolve().pixels, f->resolve().pixels);
         EXPECT_EQ(a.resolve_aov(Aov::ObjectId).pixels, f->resolve_aov(Aov::ObjectId).pixels);
         EXPECT_EQ(a.resolve_aov(Aov::MaterialId).pixels, f->resolve_aov(Aov::MaterialId).pixels);
+        for (Aov crypto : {Aov::CryptoObject, Aov::CryptoMaterial})
+            EXPECT_EQ(a.resolve_aov(crypto).pixels, f->resolve_aov(crypto).pixels);
     }
 }
 
