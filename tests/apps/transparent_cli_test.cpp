@@ -194,6 +194,18 @@ TEST(TransparentCli, FarmBandsMergeToTheImagesOfOneMachine) {
         EXPECT_TRUE(test::same_pixels(dir.file(std::string("ref/") + name),
                                       dir.file(std::string("farm/") + name)))
             << name;
+    // The merged header keeps the Cryptomatte entries.
+    auto header = [&](const std::string& path, const std::string& key) {
+        std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+        return in ? std::string(in->spec().get_string_attribute(key)) : std::string("<no file>");
+    };
+    for (const char* layer : {"CryptoObject", "CryptoMaterial"})
+        for (const char* entry : {"name", "hash", "conversion", "manifest"}) {
+            const std::string key = cryptomatte_key(layer, entry);
+            const std::string ref = header(dir.file("ref/ids.exr"), key);
+            EXPECT_FALSE(ref.empty()) << key;
+            EXPECT_EQ(header(dir.file("farm/ids.exr"), key), ref) << key;
+        }
 }
 
 }  // namespace
