@@ -17,7 +17,9 @@ Spectrum BasicIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
     for (int depth = 0;;) {
         const std::optional<Hit> hit = accel.intersect(ray);
         if (!hit) {
-            if (const EnvironmentLight* env = ctx.lights.environment())
+            const EnvironmentLight* env = ctx.lights.environment();
+            // A transparent background hides the environment from camera rays only.
+            if (env && (depth > 0 || !m_options.transparent_background))
                 L += throughput * env->Le(normalize(ray.d));
             break;
         }

@@ -126,7 +126,9 @@ Spectrum DirectIntegrator::Li(const Ray& camera_ray, const RenderContext& ctx,
             if (is_black(beta)) break;
         }
         if (!hit) {
-            if (const EnvironmentLight* env = ctx.lights.environment())
+            const EnvironmentLight* env = ctx.lights.environment();
+            // A transparent background hides the environment from camera rays only.
+            if (env && (depth > 0 || !m_options.transparent_background))
                 L += beta * env->Le(normalize(ray.d));
             break;
         }

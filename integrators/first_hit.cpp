@@ -1,6 +1,7 @@
 #include "integrators/first_hit.h"
 
 #include "core/camera/camera_culling.h"
+#include "core/film/cryptomatte.h"
 
 namespace penumbra {
 
@@ -39,6 +40,10 @@ AovRecord first_hit_aovs(const Ray& camera_ray, const RenderContext& ctx, uint64
     rec.normal = s->sd.frame.n;
     rec.position = s->sp.p;
     rec.depth = length(s->sp.p - camera_ray.o);
+    rec.object = ctx.scene.instances[s->sp.instance].node;
+    rec.material = s->sp.material >= 0 ? s->sp.material : kDefaultMaterialId;
+    rec.object_hash = cryptomatte_hash(cryptomatte_object_name(ctx.scene, s->sp.instance));
+    rec.material_hash = cryptomatte_hash(cryptomatte_material_name(ctx.scene, s->sp.material));
     return rec;
 }
 

@@ -84,6 +84,11 @@ struct IntegratorOptions {
     // are shaded with at least this roughness, so near-specular lobes met later (the
     // caustic paths diffuse -> mirror -> light) become glossy and NEE can find the light.
     float regularize_roughness = 0;
+    // path, direct, basic: a transparent background. Camera rays that escape (past any
+    // surfaces they pass through) find no environment, so the colour there is 0 and the
+    // render loop's alpha (Aov::Coverage) says where geometry is; the environment still
+    // lights the scene and is seen in reflections and through refraction.
+    bool transparent_background = false;
 };
 
 class Integrator {

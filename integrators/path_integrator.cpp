@@ -261,7 +261,9 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         // sampling: no light sample could have produced it.
         const bool unweighted = path.depth == 0 || path.specular_bounce;
         if (!hit) {
-            add_escaped_light(ctx, o, ray, unweighted, path);
+            // A transparent background hides the environment from camera rays only.
+            if (path.depth > 0 || !o.transparent_background)
+                add_escaped_light(ctx, o, ray, unweighted, path);
             break;
         }
         const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);

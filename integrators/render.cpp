@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "core/sampling/hash.h"
 #include "integrators/adaptive_sampling.h"
+#include "integrators/camera_coverage.h"
 #include "integrators/denoise_guide.h"
 #include "integrators/first_hit.h"
 
@@ -72,6 +73,7 @@ struct Pass {
     // the spread of one QMC pixel's samples is not (Owen 2013, ch. 17, "replicates").
     const std::unique_ptr<Sampler>* prototypes;
     bool halves, first_hit, guides, packets;
+    bool coverage;  // a transparent background: the film's alpha (camera_coverage.h)
     uint32_t first, last;
     const std::vector<uint8_t>* active;
     TileGrid grid;
@@ -119,13 +121,17 @@ inline void camera_ray(const Pass& pass, int x, int y, uint32_t s, Sampler& samp
 
 // A sample's radiance to the film, with its AOVs where the film has any (kAovs: a
 // separate instantiation, so that a render without them does no AOV work per sample).
+// hit: the camera ray's closest hit where the packet traced it (nullptr: not traced).
 template <bool kAovs>
 inline void add_sample(const Pass& pass, int x, int y, uint32_t s, const Ray& ray,
-                       const Spectrum& L, const FilterSample& fs) {
+                       const Spectrum& L, const FilterSample& fs,
+                       const std::optional<Hit>* hit = nullptr) {
     if constexpr (kAovs) {
         const uint64_t key = hash_values(pass.options.seed, x, y, s);
         AovRecord aov = pass.first_hit ? first_hit_aovs(ray, pass.ctx, key) : AovRecord{};
         if (pass.guides) aov.guide = denoise_guide(ray, pass.ctx, key);
+        if (pass.coverage) aov.coverage = camera_coverage(ray, pass.ctx, hit);
+        aov.offset2 = fs.offset.x * fs.offset.x + fs.offset.y * fs.offset.y;
         aov.odd = (s & 1) != 0;
         pass.film.add_sample(x, y, L, fs.weight, aov);
     } else {
@@ -148,7 +154,7 @@ inline void render_packets(const Pass& pass, TileSamplers& samplers, const int x
             add_sample<kAovs>(
                 pass, xs[i], ys[i], s, rays[i],
                 pass.integrator.Li_from_hit(rays[i], hits[i], pass.ctx, samplers.for_sample(i, s)),
-                fs[i]);
+                fs[i], &hits[i]);
     }
 }
 
@@ -231,6 +237,7 @@ bool render_samples(const RenderContext& ctx, const Camera& camera, const Integr
                     film.aovs().needs_first_hit(),
                     film.aovs().has(Aov::Denoise),
                     integrator.uses_first_hit(),
+                    film.aovs().has(Aov::Coverage),
                     first,
                     last,
                     active,

@@ -41,7 +41,8 @@ struct RenderOptions {
     BatchProgress* batch = nullptr;  // the overall bar of a batch, or nullptr
     // AOVs to accumulate besides the beauty (the film render() returns has them). The
     // first-hit ones cost one more camera ray per sample, Aov::Denoise's guides one or
-    // more; rays traced include them.
+    // more, Aov::Coverage (a transparent background's alpha) one outside camera packets
+    // and one per surface it passes; rays traced include them.
     AovSet aovs;
     // Adaptive sampling (integrators/adaptive_sampling.h): > 0 stops each pixel once its
     // estimated relative standard error is below this, after at least min_spp samples

@@ -5,9 +5,9 @@
 namespace penumbra {
 
 const std::vector<std::string>& aov_names() {
-    static const std::vector<std::string> names = {"albedo",   "normal",   "depth",
-                                                   "position", "variance", "samples",
-                                                   "error"};
+    static const std::vector<std::string> names = {
+        "albedo",    "normal",      "depth",          "position",       "variance", "samples",
+        "error",     "object_id",   "material_id",    "crypto_object", "crypto_material"};
     return names;
 }
 
@@ -23,8 +23,18 @@ AovSet parse_aovs(const std::string& list) {
         start = end + 1;
         if (name.empty()) continue;
         if (name == "all") {
-            for (size_t i = 0; i < aov_names().size(); ++i)
-                if (Aov(1u << i) != Aov::Error) set.add(Aov(1u << i));
+            // Not the error (it changes the sample streams), nor Cryptomatte (its own
+            // eight IDs per pixel and type, and three layers).
+            for (size_t i = 0; i < aov_names().size(); ++i) {
+                const Aov a = Aov(1u << i);
+                if (a != Aov::Error && a != Aov::CryptoObject && a != Aov::CryptoMaterial)
+                    set.add(a);
+            }
+            continue;
+        }
+        if (name == "cryptomatte") {
+            set.add(Aov::CryptoObject);
+            set.add(Aov::CryptoMaterial);
             continue;
         }
         bool found = false;
@@ -37,7 +47,7 @@ AovSet parse_aovs(const std::string& list) {
             std::string known;
             for (const std::string& n : aov_names()) known += (known.empty() ? "" : ", ") + n;
             throw std::invalid_argument("unknown AOV '" + name + "' (expected " + known +
-                                        " or all)");
+                                        ", cryptomatte or all)");
         }
     }
     return set;

@@ -9,8 +9,9 @@
 
 namespace penumbra {
 
-// "albedo,normal,depth,position,variance,samples,error" (any subset, any order; "all"
-// for every one but error, which changes the sample streams). Throws
+// "albedo,normal,depth,position,variance,samples,error,object_id,material_id,crypto_object,
+// crypto_material" (any subset, any order; "cryptomatte" for both Cryptomatte layers, "all"
+// for every one but error, which changes the sample streams, and Cryptomatte). Throws
 // std::invalid_argument naming an unknown entry.
 AovSet parse_aovs(const std::string& list);
 // The names parse_aovs accepts, in Aov order.

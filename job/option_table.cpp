@@ -401,6 +401,14 @@ void add_sampling_options(std::vector<OptionDecl>& t) {
                                "biased)",
                                Header::WhenPositive},
                               FIELD(path.regularize_roughness), 0, 1));
+    t.push_back(flag({"transparent-background", "transparent_background",
+                      "penumbra:transparent_background", kPixels, kRender,
+                      "Camera rays that miss all geometry give zero colour and zero alpha: alpha "
+                      "is the camera rays' coverage, filtered as the colour and premultiplied "
+                      "(the environment and default lights still light the scene and are seen "
+                      "in reflections and through glass, which covers)",
+                      Header::Always},
+                     FIELD(path.transparent_background)));
     t.push_back(flag({"denoise", "denoise", "", kPixels, kImage,
                       "Denoise the EXR's RGB (and the preview) after rendering, feature-guided "
                       "(NFOR); the unbiased estimate is kept as the layer Noisy.R/G/B and the "
@@ -437,9 +445,13 @@ void add_output_options(std::vector<OptionDecl>& t) {
                      FIELD(color.look)));
     OptionDecl aov = text({"aov", "aov", "", kPixels, kRender,
                            "Extra EXR layers, comma-separated: albedo, normal, depth, position, "
-                           "variance, samples (or all), and error (relative standard error from "
-                           "two independently seeded halves of the samples; it changes the "
-                           "noise, so 'all' leaves it out)"},
+                           "variance, samples, object_id, material_id (glTF node and material "
+                           "index of the sample nearest each pixel's centre; -1: no hit, -2: "
+                           "the default material) (or all), error (relative standard error "
+                           "from two independently seeded halves of the samples; it changes the "
+                           "noise, so 'all' leaves it out), and crypto_object, crypto_material "
+                           "or cryptomatte for both (Cryptomatte layers of the glTF node and "
+                           "material names, with the manifest in the header; not in 'all')"},
                           FIELD(aovs));
     aov.set = [](RenderCommandOptions& o, const std::string& list) {
         parse_aovs(list);  // throws std::invalid_argument naming an unknown layer

@@ -1,5 +1,7 @@
 #include "apps/penumbra/render_metadata.h"
 
+#include "core/film/cryptomatte.h"
+#include "job/aov_list.h"
 #include "job/option_table.h"
 #include "core/lights/environment_light.h"
 #include "core/sampling/sampler.h"
@@ -44,6 +46,16 @@ Metadata render_metadata(const RenderCommandOptions& o, const std::string& scene
              std::to_string(double(stats.camera_samples) / (double(setup.width) * setup.height))});
         metadata.push_back({"penumbra:unconverged_pixels", std::to_string(stats.active_pixels)});
     }
+    // Cryptomatte: each layer's name, hash, conversion and manifest (every name it can hold).
+    const AovSet aovs = parse_aovs(o.aovs);
+    if (aovs.has(Aov::CryptoObject))
+        for (auto& [k, v] : cryptomatte_header(kCryptoObjectLayer,
+                                               cryptomatte_object_names(setup.scene)))
+            metadata.push_back({k, v});
+    if (aovs.has(Aov::CryptoMaterial))
+        for (auto& [k, v] : cryptomatte_header(kCryptoMaterialLayer,
+                                               cryptomatte_material_names(setup.scene)))
+            metadata.push_back({k, v});
     // Timing differs from run to run, so it is opt-in: by default the same command
     // writes a bitwise identical file (docs/conventions.md).
     if (o.timing_metadata) {

@@ -266,6 +266,8 @@ RenderOptions render_options_for(const RenderCommandOptions& o, const std::strin
     r.time_limit = o.time_limit;
     r.aovs = parse_aovs(o.aovs);
     if (o.denoise) r.aovs.add(Aov::Denoise);
+    // The integrator leaves escaped camera rays black; the film's alpha says where.
+    if (o.path.transparent_background) r.aovs.add(Aov::Coverage);
     r.target_error = o.target_error;
     r.min_spp = o.adaptive_min_spp;
     return r;

@@ -52,6 +52,11 @@ Film::Film(int width, int height, AovSet aovs)
         m_aov.odd.assign(n, Sum3{});
         m_aov.odd_weight.assign(n, 0.0);
     }
+    if (aovs.has(Aov::Coverage)) m_aov.coverage.assign(n, 0.0);
+    if (aovs.has(Aov::Coverage) && aovs.splits_halves()) m_aov.coverage_odd.assign(n, 0.0);
+    if (aovs.has_ids()) m_aov.ids.assign(n, IdSample{});
+    if (aovs.has(Aov::CryptoObject)) m_aov.crypto_object.assign(n, CryptomatteSlots{});
+    if (aovs.has(Aov::CryptoMaterial)) m_aov.crypto_material.assign(n, CryptomatteSlots{});
     if (denoise) {
         m_aov.guide.assign(n, Guide{});
         m_aov.guide_odd.assign(n, Guide{});
@@ -80,6 +85,20 @@ void Film::add_sample(int x, int y, Spectrum L, float w, const AovRecord& aov) {
         for (int c = 0; c < 3; ++c) v[k][c] += double(a[c]) * w;
     };
     if (!m_aov.count.empty()) ++m_aov.count[i];
+    // Alpha is filtered as the colour is: a sample the colour drops is no coverage either.
+    if (!m_aov.coverage.empty() && is_finite(L)) {
+        m_aov.coverage[i] += double(aov.coverage) * w;
+        if (aov.odd && !m_aov.coverage_odd.empty())
+            m_aov.coverage_odd[i] += double(aov.coverage) * w;
+    }
+    // Coverage in the colour's weights: a sample the colour drops counts for no ID.
+    if (aov.hit && is_finite(L)) {
+        if (!m_aov.crypto_object.empty()) m_aov.crypto_object[i].add(aov.object_hash, w);
+        if (!m_aov.crypto_material.empty()) m_aov.crypto_material[i].add(aov.material_hash, w);
+    }
+    // Strictly nearer only: of equally near samples the first (in index order) stays.
+    if (!m_aov.ids.empty() && aov.offset2 < m_aov.ids[i].offset2)
+        m_aov.ids[i] = {aov.offset2, aov.object, aov.material};
     if (!m_aov.square.empty() && is_finite(L)) {
         add3(m_aov.square, i, L * L, w);
         m_aov.weight2[i] += double(w) * w;
@@ -130,7 +149,8 @@ Spectrum Film::estimated_variance(int x, int y) const {
 }
 
 float Film::relative_error(int x, int y) const {
-    const Pixel& px = m_pixels[size_t(y) * m_width + x];
+    const size_t i = size_t(y) * m_width + x;
+    const Pixel& px = m_pixels[i];
     if (px.weight == 0) return std::numeric_limits<float>::infinity();
     const Spectrum v = estimated_variance(x, y);
     double sum = 0;
@@ -138,12 +158,25 @@ float Film::relative_error(int x, int y) const {
         const double mean = px.sum[c] / px.weight;
         sum += v[c] / (mean * mean + kRelMseEpsilon);
     }
-    return float(std::sqrt(sum / 3));
+    if (m_aov.coverage_odd.empty()) return float(std::sqrt(sum / 3));
+    // A transparent background's alpha is an estimate too: a dark object's edge, whose
+    // colour is near 0 either way, must not stop while its alpha is still noisy.
+    const double nb = m_aov.odd_weight[i], na = px.weight - nb;
+    if (na > 1e-9 * px.weight && nb > 1e-9 * px.weight) {
+        const double b = m_aov.coverage_odd[i] / nb,
+                     a = (m_aov.coverage[i] - m_aov.coverage_odd[i]) / na;
+        const double mean = m_aov.coverage[i] / px.weight;
+        const double variance = (a - b) * (a - b) * na * nb / (px.weight * px.weight);
+        sum += variance / (mean * mean + kRelMseEpsilon);
+    }
+    return float(std::sqrt(sum / 4));
 }
 
 Image Film::resolve_aov(Aov aov) const {
-    const bool scalar = aov == Aov::Depth || aov == Aov::Samples || aov == Aov::Error;
-    Image img(m_width, m_height, scalar ? 1 : 3);
+    const bool scalar = aov == Aov::Depth || aov == Aov::Samples || aov == Aov::Error ||
+                        aov == Aov::ObjectId || aov == Aov::MaterialId;
+    const bool crypto = aov == Aov::CryptoObject || aov == Aov::CryptoMaterial;
+    Image img(m_width, m_height, crypto ? 2 * kCryptomatteRanks : scalar ? 1 : 3);
     if (!m_aovs.has(aov)) return img;
     for (size_t i = 0; i < m_pixels.size(); ++i) {
         float* out = &img.pixels[i * img.channels];
@@ -176,8 +209,26 @@ Image Film::resolve_aov(Aov aov) const {
                     out[c] = float(variance_of_mean(m_pixels[i].sum[c], m_aov.square[i][c],
                                                     m_pixels[i].weight, m_aov.weight2[i]));
                 break;
+            case Aov::ObjectId:
+                out[0] = float(m_aov.ids[i].object);
+                break;
+            case Aov::MaterialId:
+                out[0] = float(m_aov.ids[i].material);
+                break;
+            case Aov::CryptoObject:
+            case Aov::CryptoMaterial: {
+                const CryptomatteSlots& slots = aov == Aov::CryptoObject ? m_aov.crypto_object[i]
+                                                                         : m_aov.crypto_material[i];
+                const auto ranked = slots.ranked(m_pixels[i].weight);
+                for (int r = 0; r < kCryptomatteRanks; ++r) {
+                    out[2 * r] = ranked[size_t(r)].first;
+                    out[2 * r + 1] = ranked[size_t(r)].second;
+                }
+                break;
+            }
             case Aov::Denoise:
-                break;  // not an image of its own: denoise_input()
+            case Aov::Coverage:
+                break;  // not images of their own: denoise_input(), resolve()'s alpha
         }
     }
     return img;
@@ -222,7 +273,9 @@ Image Film::resolve() const {
             float* out = img.at(x, y);
             const double inv = px.weight != 0 ? 1.0 / px.weight : 0.0;
             for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(px.sum[c] * inv);
-            out[3] = 1;
+            out[3] = m_aov.coverage.empty()
+                         ? 1.0f
+                         : static_cast<float>(m_aov.coverage[size_t(y) * m_width + x] * inv);
         }
     return img;
 }
@@ -246,7 +299,12 @@ std::vector<Film::Buffer> Film::buffers() {
             raw("odd_weight", m_aov.odd_weight),
             raw("guide", m_aov.guide),
             raw("guide_odd", m_aov.guide_odd),
-            raw("guide_square", m_aov.guide_square)};
+            raw("guide_square", m_aov.guide_square),
+            raw("coverage", m_aov.coverage),
+            raw("coverage_odd", m_aov.coverage_odd),
+            raw("ids", m_aov.ids),
+            raw("crypto_object", m_aov.crypto_object),
+            raw("crypto_material", m_aov.crypto_material)};
 }
 
 uint64_t Film::nonfinite_samples() const {

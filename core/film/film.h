@@ -6,10 +6,12 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "core/denoise/denoise_input.h"
 #include "core/film/aov.h"
+#include "core/film/cryptomatte.h"
 #include "core/image.h"
 #include "core/math/vec.h"
 
@@ -34,13 +36,19 @@ public:
     Spectrum estimated_variance(int x, int y) const;
     // sqrt(mean over R, G, B of variance / (mean^2 + epsilon)): the relative standard
     // error that --target-error compares, matching relMSE's epsilon (kRelMseEpsilon).
+    // With Aov::Coverage alpha is a fourth channel of the mean (its halves' variance).
     float relative_error(int x, int y) const;
-    // Linear RGBA image, alpha = 1.
+    // Linear RGBA image. Alpha is 1, or with Aov::Coverage the weighted mean of the
+    // samples' coverage, with the colour's weights (0 where the pixel has no samples); the
+    // colour, whose misses count as zero, is then premultiplied by it.
     Image resolve() const;
     // One AOV's image: 3 channels (albedo, normal, position, variance) or 1 (depth,
-    // samples). Albedo and normal average over all samples (a miss counts as zero);
+    // samples, IDs). Albedo and normal average over all samples (a miss counts as zero);
     // depth and position over the samples that hit (kNoHitDepth and 0 where none did).
-    // Error is relative_error (1 channel).
+    // Error is relative_error (1 channel). The IDs are those of the sample nearest the
+    // pixel's centre (the earliest of equally near ones), as exact integers in floats.
+    // Cryptomatte gives 2 kCryptomatteRanks channels: per rank the ID (cryptomatte_float)
+    // and its coverage (its samples' weight over all the pixel's), largest first.
     // Variance is that of the pixel's mean: the weighted sample variance over the
     // effective sample count (sum w)^2 / sum w^2, less one; 0 below two samples.
     Image resolve_aov(Aov aov) const;
@@ -68,6 +76,10 @@ public:
 private:
     using Sum3 = std::array<double, 3>;
     using Guide = std::array<double, kGuideChannels>;
+    struct IdSample {
+        float offset2 = std::numeric_limits<float>::infinity();  // no sample yet
+        int32_t object = kNoHitId, material = kNoHitId;
+    };
     // Structure of arrays: an AOV not asked for costs nothing but an empty vector.
     struct AovSums {
         std::vector<Sum3> albedo, normal, position, square;      // square: w L^2
@@ -80,6 +92,13 @@ private:
         // Denoising: the guide features' sums (w g), those of the odd-indexed samples and
         // the squares (w g^2), in denoise_input.h's channel order.
         std::vector<Guide> guide, guide_odd, guide_square;
+        // Transparent background: the sum of w times the sample's coverage, and that of
+        // the odd-indexed samples where the error estimate splits them.
+        std::vector<double> coverage, coverage_odd;
+        // ID layers: the IDs of the pixel's sample nearest its centre so far.
+        std::vector<IdSample> ids;
+        // Cryptomatte: each pixel's IDs and their weights.
+        std::vector<CryptomatteSlots> crypto_object, crypto_material;
     };
     struct Pixel {
         double sum[3] = {0, 0, 0};

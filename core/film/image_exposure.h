@@ -23,7 +23,7 @@ constexpr double kMaxClippedFraction = 0.5;
 constexpr float kMiddleGrey = 0.18f;
 
 struct ImageExposure {
-    size_t pixels = 0;
+    size_t pixels = 0;  // measured
     double lit_fraction = 0;      // exposed luminance >= kLitLuminance
     double clipped_fraction = 0;  // exposed luminance > kClipLuminance
     // Exposed luminance at the median and the 99th percentile (nearest rank).
@@ -34,7 +34,8 @@ struct ImageExposure {
 };
 
 // Measures the RGB channels of image (linear, Rec.709 luminance weights) scaled by
-// 2^exposure. Non-finite pixels count as black.
+// 2^exposure. Non-finite pixels count as black; pixels of alpha 0 (a transparent
+// background's, where no camera ray found geometry) are left out, `pixels` counting the rest.
 ImageExposure measure_exposure(const Image& image, float exposure = 0);
 
 }  // namespace penumbra

@@ -26,6 +26,25 @@ void write_with_oiio(const std::string& path, const OIIO::ImageSpec& spec, OIIO:
         throw SceneError(shown + ": cannot write: " + out->geterror());
 }
 
+// An RGBA image whose alpha is below 1 somewhere (a transparent background's coverage).
+bool has_partial_alpha(const Image& image) {
+    if (image.channels != 4) return false;
+    for (size_t i = 3; i < image.pixels.size(); i += 4)
+        if (image.pixels[i] < 1) return true;
+    return false;
+}
+
+// Premultiplied RGBA to straight colour, as PNG stores it (0 where alpha is 0), so that
+// the display transform sees the surface's own colour at partly covered pixels.
+Image unpremultiplied(const Image& image) {
+    Image out = image;
+    for (size_t i = 0; i < out.pixels.size(); i += 4) {
+        const float a = out.pixels[i + 3];
+        for (size_t c = 0; c < 3; ++c) out.pixels[i + c] = a > 0 ? out.pixels[i + c] / a : 0.0f;
+    }
+    return out;
+}
+
 // OIIO takes matrices as Imath stores them: row vectors, so ours transposed.
 void set_attribute(OIIO::ImageSpec& spec, const std::string& key, const MetadataValue& value) {
     if (const auto* s = std::get_if<std::string>(&value)) {
@@ -118,11 +137,24 @@ void write_exr(const std::string& path, const Image& image, const Metadata& meta
 
 void write_preview(const std::string& path, const Image& image, const ColorPipeline& color,
                    float exposure) {
-    const Image display = color.to_display(image, exposure);
-    std::vector<unsigned char> bytes(display.pixels.size());
-    for (size_t i = 0; i < bytes.size(); ++i)
-        bytes[i] = static_cast<unsigned char>(std::lround(display.pixels[i] * 255.0f));
-    OIIO::ImageSpec spec(display.width, display.height, 3, OIIO::TypeDesc::UINT8);
+    // JPEG has no alpha: there the premultiplied colour shows the image over black.
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    const bool alpha = ext == ".png" && has_partial_alpha(image);
+    const Image display = color.to_display(alpha ? unpremultiplied(image) : image, exposure);
+    const int channels = alpha ? 4 : 3;
+    const size_t n = size_t(display.width) * display.height;
+    std::vector<unsigned char> bytes(n * channels);
+    auto byte = [](float v) { return static_cast<unsigned char>(std::lround(v * 255.0f)); };
+    for (size_t p = 0; p < n; ++p) {
+        for (int c = 0; c < 3; ++c) bytes[p * channels + c] = byte(display.pixels[p * 3 + c]);
+        if (alpha) bytes[p * 4 + 3] = byte(std::clamp(image.pixels[p * 4 + 3], 0.0f, 1.0f));
+    }
+    OIIO::ImageSpec spec(display.width, display.height, channels, OIIO::TypeDesc::UINT8);
+    // The colour is straight already: OIIO would otherwise take it as premultiplied and
+    // divide it by alpha once more.
+    if (alpha) spec.attribute("oiio:UnassociatedAlpha", 1);
     // Tells PNG readers the curve (an sRGB chunk); other displays' encodings have no
     // PNG tag OIIO would write, so they get none rather than a wrong one.
     std::string display_name = color.display();

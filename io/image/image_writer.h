@@ -50,7 +50,9 @@ void write_exr(const std::string& path, const Image& image, const Metadata& meta
 // A linear image (in color's working space) through color's display/view/look, exposure
 // in stops applied first, quantised to 8 bits; the format follows the extension (.png,
 // .jpg, .jpeg). Without a pipeline: the built-in config's sRGB Standard view, i.e. the
-// sRGB curve on values clamped to [0,1].
+// sRGB curve on values clamped to [0,1]. An RGBA image with alpha below 1 somewhere (a
+// transparent background) gives an RGBA PNG with straight colour, as PNG stores it;
+// otherwise (and as JPEG) the preview is RGB.
 void write_preview(const std::string& path, const Image& image, const ColorPipeline& color,
                    float exposure = 0);
 void write_preview(const std::string& path, const Image& image, float exposure = 0);

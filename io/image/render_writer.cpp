@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "core/camera/camera_matrices.h"
+#include "core/film/cryptomatte.h"
 #include "core/film/image_error.h"
 #include "core/error.h"
 #include "io/image/denoise_layers.h"
@@ -35,6 +36,10 @@ const std::vector<AovLayout>& aov_layouts() {
         {Aov::Samples, "Samples", {"X"}, false, true},
         // Relative, so an exposure leaves it as it is.
         {Aov::Error, "Error", {"X"}, false, false},
+        // Integers in float channels, as Cycles writes IndexOB and IndexMA and Blender's
+        // compositor and Nuke read ID passes; 32-bit, exact to 2^24.
+        {Aov::ObjectId, "ObjectID", {"X"}, false, true},
+        {Aov::MaterialId, "MaterialID", {"X"}, false, true},
     };
     return list;
 }
@@ -91,8 +96,11 @@ Beauty denoised_beauty(const DenoisedBeauty& denoised, const Image& alpha, float
                             << alpha.width << "x" << alpha.height << "x" << alpha.channels
                             << " beauty");
     Image working = alpha;
+    // A pixel no camera ray covered (a transparent background's alpha 0) stays empty:
+    // the denoiser's neighbourhood would otherwise leak the object's colour into it.
     for (size_t p = 0; p < size_t(rgb.width) * rgb.height; ++p)
-        for (size_t c = 0; c < 3; ++c) working.pixels[p * 4 + c] = rgb.pixels[p * 3 + c];
+        for (size_t c = 0; c < 3; ++c)
+            working.pixels[p * 4 + c] = alpha.pixels[p * 4 + 3] == 0 ? 0.0f : rgb.pixels[p * 3 + c];
     return make_beauty(std::move(working), exposure, color);
 }
 
@@ -105,9 +113,31 @@ std::vector<std::pair<std::string, std::string>> denoise_attributes(
             {"penumbra:denoise_firefly_energy", full_precision(denoised.firefly_energy)}};
 }
 
+namespace {
+
+// A Cryptomatte AOV's layers, Typename00 to 02: two ranks each, ID and coverage in R G and
+// B A, 32-bit (the IDs are hashes in float bits).
+void add_cryptomatte_layers(const Film& film, Aov aov, const char* name, AovLayers& out) {
+    if (!film.aovs().has(aov)) return;
+    const Image ranked = film.resolve_aov(aov);
+    for (int layer = 0; layer < kCryptomatteRanks / 2; ++layer) {
+        Image img(ranked.width, ranked.height, 4);
+        for (size_t p = 0; p < size_t(img.width) * img.height; ++p)
+            for (int c = 0; c < 4; ++c)
+                img.pixels[p * 4 + size_t(c)] = ranked.pixels[p * ranked.channels + 4 * layer + c];
+        out.images.push_back(std::move(img));
+        char layer_name[64];
+        std::snprintf(layer_name, sizeof layer_name, "%s%02d", name, layer);
+        out.layers.push_back({layer_name, {"R", "G", "B", "A"}, &out.images.back(), true});
+    }
+}
+
+}  // namespace
+
 AovLayers aov_layers(const Film& film, const ColorPipeline& color, float radiance_scale) {
     AovLayers out;
-    out.images.reserve(aov_layouts().size());  // layers point into images
+    // Layers point into images: no reallocation.
+    out.images.reserve(aov_layouts().size() + kCryptomatteRanks);
     for (const AovLayout& l : aov_layouts()) {
         if (!film.aovs().has(l.aov)) continue;
         out.images.push_back(film.resolve_aov(l.aov));
@@ -116,6 +146,8 @@ AovLayers aov_layers(const Film& film, const ColorPipeline& color, float radianc
             for (float& v : out.images.back().pixels) v *= radiance_scale * radiance_scale;
         out.layers.push_back({l.layer, l.channels, &out.images.back(), l.full_float});
     }
+    add_cryptomatte_layers(film, Aov::CryptoObject, kCryptoObjectLayer, out);
+    add_cryptomatte_layers(film, Aov::CryptoMaterial, kCryptoMaterialLayer, out);
     return out;
 }
 

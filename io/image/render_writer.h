@@ -70,7 +70,8 @@ struct Beauty {
 };
 Beauty make_beauty(Image working, float exposure, const ColorPipeline& color);
 // The beauty of a denoised render: denoised's colour (working space, 3 channels) with
-// alpha's alpha (channel 3 of an RGBA image the same size; its colour is not read).
+// alpha's alpha (channel 3 of an RGBA image the same size; its colour is not read), and
+// black where that alpha is 0 (no camera ray covered the pixel).
 Beauty denoised_beauty(const DenoisedBeauty& denoised, const Image& alpha, float exposure,
                        const ColorPipeline& color);
 // The header strings of a denoised render: "penumbra:denoise" (the method) and

@@ -32,8 +32,11 @@ TEST(FilmAov, ParsesTheList) {
     EXPECT_FALSE(parse_aovs("variance,samples").needs_first_hit());
     EXPECT_FALSE(parse_aovs("").any());
     const AovSet all = parse_aovs("all");
-    for (Aov a : {Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Position, Aov::Variance, Aov::Samples})
+    for (Aov a : {Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Position, Aov::Variance, Aov::Samples,
+                  Aov::ObjectId, Aov::MaterialId})
         EXPECT_TRUE(all.has(a));
+    EXPECT_FALSE(all.has(Aov::Denoise));
+    EXPECT_FALSE(all.has(Aov::Coverage));
     EXPECT_THROW(parse_aovs("albedo,emission"), std::invalid_argument);
 }
 

@@ -36,6 +36,21 @@ TEST(ImageExposure, NearlyBlackBelowOnePercentLitPixels) {
     EXPECT_FALSE(measure_exposure(Image()).nearly_black());
 }
 
+TEST(ImageExposure, ATransparentBackgroundIsNoPartOfThePicture) {
+    // 9 lit pixels among 1000 are nearly black; the same 9 with the 900 dark pixels
+    // after the first 100 empty (alpha 0, a transparent background) are 9% of the picture.
+    Image img = grey(9, 0.5f);
+    for (int i = 100; i < 1000; ++i) img.pixels[size_t(i) * 4 + 3] = 0;
+    const ImageExposure e = measure_exposure(img);
+    EXPECT_EQ(e.pixels, 100u);
+    EXPECT_DOUBLE_EQ(e.lit_fraction, 0.09);
+    EXPECT_FALSE(e.nearly_black());
+    // Nothing in view at all: nothing to judge.
+    for (int i = 0; i < 100; ++i) img.pixels[size_t(i) * 4 + 3] = 0;
+    EXPECT_EQ(measure_exposure(img).pixels, 0u);
+    EXPECT_FALSE(measure_exposure(img).nearly_black());
+}
+
 TEST(ImageExposure, APixelIsLitFromOnePercentOfDisplayWhiteAfterExposure) {
     // Every pixel just below 1%: all dark; just at it: all lit.
     EXPECT_EQ(measure_exposure(grey(1000, 0.0099f)).lit_fraction, 0.0);

@@ -41,7 +41,8 @@ Result render_sphere(AovSet aovs, int threads, bool in_two_passes = false) {
         film = render(ctx, camera, *integrator, opt);
     }
     Result r{film.resolve(), {}};
-    for (Aov a : {Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Position, Aov::Variance, Aov::Samples})
+    for (Aov a : {Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Position, Aov::Variance, Aov::Samples,
+                  Aov::ObjectId, Aov::MaterialId})
         r.aovs.push_back(film.resolve_aov(a));
     if (aovs.has(Aov::Denoise)) r.denoise = film.denoise_input();
     return r;

@@ -96,10 +96,13 @@ TEST(ExrAov, LayersReadBackWithTheirNamesAndValues) {
     std::vector<std::string> names;
     for (const auto& [name, values] : e.channels) names.push_back(name);
     const std::vector<std::string> expected = {
-        "A",          "Albedo.B", "Albedo.G",  "Albedo.R",   "B",          "Depth.Z",
-        "G",          "Normal.X", "Normal.Y",  "Normal.Z",   "Position.X", "Position.Y",
-        "Position.Z", "R",        "Samples.X", "Variance.B", "Variance.G", "Variance.R"};
+        "A",        "Albedo.B",   "Albedo.G",     "Albedo.R",   "B",
+        "Depth.Z",  "G",          "MaterialID.X", "Normal.X",   "Normal.Y",
+        "Normal.Z", "ObjectID.X", "Position.X",   "Position.Y", "Position.Z",
+        "R",        "Samples.X",  "Variance.B",   "Variance.G", "Variance.R"};
     EXPECT_EQ(names, expected);
+    // The IDs are 32-bit floats holding integers.
+    EXPECT_EQ(e.spec.channelformat(e.spec.channelindex("ObjectID.X")), OIIO::TypeDesc::FLOAT);
     EXPECT_EQ(e.spec.alpha_channel, e.spec.channelindex("A"));
 
     // The plane's columns: pixel x covers world [-2 + x/4, -2 + (x+1)/4].
@@ -116,6 +119,7 @@ TEST(ExrAov, LayersReadBackWithTheirNamesAndValues) {
             EXPECT_NEAR(e.at("Position.X", x, y), -2 + (x + 0.5f) / 4, 1.5f / 4);
             EXPECT_EQ(e.at("Samples.X", x, y), float(kSpp));
             EXPECT_GE(e.at("Variance.R", x, y), 0);
+            EXPECT_EQ(e.at("MaterialID.X", x, y), 0.0f);  // the plane's material
         }
     // Beyond the plane: nothing hit.
     for (int y = 0; y < kH; ++y)
@@ -123,6 +127,8 @@ TEST(ExrAov, LayersReadBackWithTheirNamesAndValues) {
             EXPECT_EQ(e.at("Depth.Z", x, y), Film::kNoHitDepth);
             EXPECT_EQ(e.at("Albedo.R", x, y), 0);
             EXPECT_EQ(e.at("Samples.X", x, y), float(kSpp));
+            EXPECT_EQ(e.at("MaterialID.X", x, y), float(kNoHitId));
+            EXPECT_EQ(e.at("ObjectID.X", x, y), float(kNoHitId));
         }
     // The beauty channels hold the film's beauty.
     const Image beauty = film.resolve();
