@@ -28,13 +28,29 @@
 namespace {
 
 // One file per process (libFuzzer may fork workers), in a folder of its own so that
-// relative URIs in the input resolve to nothing but files the input cannot create.
+// relative URIs in the input resolve to nothing but files the input cannot create. The
+// folder is on /dev/shm (tmpfs) where there is one: ext4 writes a truncated file's data
+// back to disk when it is closed, which costs a tenth of each run's time. The folder is
+// removed when the process exits normally.
+const std::filesystem::path& input_dir() {
+    static const std::filesystem::path dir = [] {
+        std::error_code ec;
+        const std::filesystem::path base = std::filesystem::is_directory("/dev/shm", ec)
+                                               ? std::filesystem::path("/dev/shm")
+                                               : std::filesystem::temp_directory_path();
+        return base / ("penumbra-fuzz-" + std::to_string(getpid()));
+    }();
+    return dir;
+}
+
 const std::string& input_path() {
     static const std::string path = [] {
-        const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                          ("penumbra-fuzz-" + std::to_string(getpid()));
-        std::filesystem::create_directories(dir);
-        return (dir / "input.gltf").string();
+        std::filesystem::create_directories(input_dir());
+        std::atexit([] {
+            std::error_code ec;
+            std::filesystem::remove_all(input_dir(), ec);
+        });
+        return (input_dir() / "input.gltf").string();
     }();
     return path;
 }
