@@ -6,8 +6,10 @@
 # Builds the target in the asan preset's build (build/asan, or BUILD_DIR) and seeds a
 # temporary corpus. glTF: from scenes/ and, in ../shared, the Khronos samples, the real
 # files of scenes/wild/, the KHR_texture_basisu scene of scenes/ktx2/ and the fuzzer's
-# earlier finds in scenes/fuzz-found/ (copied, at most FUZZ_MAX_SEED_BYTES each, default
-# 256 KiB, also the longest input a mutation may make; the originals are not touched). KTX2: the files of ../shared/scenes/ktx2. A crash
+# earlier finds in scenes/fuzz-found/ (copied with PNG and JPEG images scaled down to 64
+# pixels a side, kept in BUILD_DIR/fuzz-seed-images for later runs; at most
+# FUZZ_MAX_SEED_BYTES each, default 256 KiB, also the longest input a mutation may make;
+# the originals are not touched). KTX2: the files of ../shared/scenes/ktx2. A crash
 # fails the script and leaves its input in FUZZ_ARTIFACTS (default build/fuzz-artifacts);
 # fix it and add the input to scenes/invalid/ with its expected message.
 set -euo pipefail
@@ -54,7 +56,8 @@ run_target() {
         for d in khronos wild fuzz-found ktx2; do
             if [ -d "$shared/scenes/$d" ]; then seed_dirs+=("$shared/scenes/$d"); fi
         done
-        python3 fuzz/make_seeds.py "$corpus" "${seed_dirs[@]}" --max-bytes "$max_bytes"
+        python3 fuzz/make_seeds.py "$corpus" "${seed_dirs[@]}" --max-bytes "$max_bytes" \
+            --image-cache "$build_dir/fuzz-seed-images"
         extra=(-dict=fuzz/gltf.dict -max_len="$max_bytes")
         binary="$build_dir/bin/gltf_loader_fuzzer"
     else
