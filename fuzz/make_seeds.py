@@ -10,7 +10,8 @@ PNG and JPEG images wider or taller than --max-image-side (default 64) pixels ar
 down to it with oiiotool, in their own format, and the buffers holding them repacked:
 decoding megapixel textures and their mip pyramids would otherwise take most of each run,
 and their bytes most of each seed, while a small image reaches the same decoder and
-texture code. Files whose images stay as they are (none too large, no oiiotool, a format
+texture code. Palette and interlaced PNGs and progressive JPEGs stay as they are, since
+oiiotool would write them in another encoding. Files whose images stay as they are (none too large, no oiiotool, a format
 it cannot read or write) are copied byte for byte. The source files are only read."""
 import argparse
 import base64
@@ -61,9 +62,12 @@ def unpack_glb(data):
 
 
 def image_size(data):
-    """(width, height) from a PNG's IHDR or a JPEG's start-of-frame; None otherwise."""
-    if data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) >= 24 and data[12:16] == b"IHDR":
-        return struct.unpack_from(">II", data, 16)
+    """(width, height) of a PNG that is neither palette nor interlaced, or of a baseline or
+    extended sequential JPEG (SOF0, SOF1); None otherwise. oiiotool writes only those
+    encodings, so other images stay as they are and keep their decoder paths in the seeds."""
+    if data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) >= 29 and data[12:16] == b"IHDR":
+        palette, interlaced = data[25] == 3, data[28] != 0
+        return None if palette or interlaced else struct.unpack_from(">II", data, 16)
     if data[:2] != b"\xff\xd8":
         return None
     at = 2
@@ -71,7 +75,7 @@ def image_size(data):
         marker = data[at + 1]
         if 0xC0 <= marker <= 0xCF and marker not in (0xC4, 0xC8, 0xCC):
             height, width = struct.unpack_from(">HH", data, at + 5)
-            return width, height
+            return (width, height) if marker in (0xC0, 0xC1) else None
         at += 2 + struct.unpack_from(">H", data, at + 2)[0]
     return None
 
