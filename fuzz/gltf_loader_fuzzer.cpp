@@ -9,8 +9,8 @@
 // header, as --max-texture-pixels would): real seeds carry megapixel images whose decoding
 // and pyramids would otherwise take most of each run, away from the loader's own code;
 // fuzz/make_seeds.py scales the seeds' images down to 64 pixels a side for the same reason.
-// Speed: about 800 executions per CPU second, 430-460 a second on the shared 2-core VM at
-// load 8-14 (`FUZZ_SECONDS=60 bash scripts/fuzz.sh gltf`; docs/performance.md, "Fuzzing").
+// Speed: about 1000 executions a second on the 2-core VM with a core free, 430-630 when it
+// is shared (`FUZZ_SECONDS=60 bash scripts/fuzz.sh gltf`; docs/performance.md, "Fuzzing").
 #include <tbb/global_control.h>
 #include <unistd.h>
 
