@@ -7,7 +7,10 @@
 // a CHECK failure or a sanitizer report is a bug: the message is printed and libFuzzer
 // stops on the abort. Textures are held to 2^16 pixels (a larger one is refused from its
 // header, as --max-texture-pixels would): real seeds carry megapixel images whose decoding
-// and pyramids would otherwise take most of each run, away from the loader's own code.
+// and pyramids would otherwise take most of each run, away from the loader's own code;
+// fuzz/make_seeds.py scales the seeds' images down to 64 pixels a side for the same reason.
+// Speed: about 1000 executions a second on the 2-core VM with a core free, 430-630 when it
+// is shared (`FUZZ_SECONDS=60 bash scripts/fuzz.sh gltf`; docs/performance.md, "Fuzzing").
 #include <tbb/global_control.h>
 #include <unistd.h>
 
@@ -28,13 +31,29 @@
 namespace {
 
 // One file per process (libFuzzer may fork workers), in a folder of its own so that
-// relative URIs in the input resolve to nothing but files the input cannot create.
+// relative URIs in the input resolve to nothing but files the input cannot create. The
+// folder is on /dev/shm (tmpfs) where there is one: ext4 writes a truncated file's data
+// back to disk when it is closed, which costs a tenth of each run's time. The folder is
+// removed when the process exits normally.
+const std::filesystem::path& input_dir() {
+    static const std::filesystem::path dir = [] {
+        std::error_code ec;
+        const std::filesystem::path base = std::filesystem::is_directory("/dev/shm", ec)
+                                               ? std::filesystem::path("/dev/shm")
+                                               : std::filesystem::temp_directory_path();
+        return base / ("penumbra-fuzz-" + std::to_string(getpid()));
+    }();
+    return dir;
+}
+
 const std::string& input_path() {
     static const std::string path = [] {
-        const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                          ("penumbra-fuzz-" + std::to_string(getpid()));
-        std::filesystem::create_directories(dir);
-        return (dir / "input.gltf").string();
+        std::filesystem::create_directories(input_dir());
+        std::atexit([] {
+            std::error_code ec;
+            std::filesystem::remove_all(input_dir(), ec);
+        });
+        return (input_dir() / "input.gltf").string();
     }();
     return path;
 }

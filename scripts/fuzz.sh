@@ -6,8 +6,10 @@
 # Builds the target in the asan preset's build (build/asan, or BUILD_DIR) and seeds a
 # temporary corpus. glTF: from scenes/ and, in ../shared, the Khronos samples, the real
 # files of scenes/wild/, the KHR_texture_basisu scene of scenes/ktx2/ and the fuzzer's
-# earlier finds in scenes/fuzz-found/ (copied, at most FUZZ_MAX_SEED_BYTES each, default
-# 256 KiB, also the longest input a mutation may make; the originals are not touched). KTX2: the files of ../shared/scenes/ktx2. A crash
+# earlier finds in scenes/fuzz-found/ (copied with PNG and JPEG images scaled down to 64
+# pixels a side, kept in BUILD_DIR/fuzz-seed-images for later runs; at most
+# FUZZ_MAX_SEED_BYTES each, default 256 KiB, also the longest input a mutation may make;
+# the originals are not touched). KTX2: the files of ../shared/scenes/ktx2. A crash
 # fails the script and leaves its input in FUZZ_ARTIFACTS (default build/fuzz-artifacts);
 # fix it and add the input to scenes/invalid/ with its expected message.
 set -euo pipefail
@@ -37,9 +39,12 @@ done
 cmake --build "$build_dir" --parallel "$(nproc)" --target "${names[@]}"
 mkdir -p "$artifacts"
 
-# Full malloc stacks: the suppressions name frames inside libraries built without frame
-# pointers, which the fast unwinder never reaches.
-export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:halt_on_error=1:fast_unwind_on_malloc=0}"
+# ASan's fast (frame-pointer) malloc stacks: full ones (fast_unwind_on_malloc=0) unwind
+# every allocation through libgcc and cost about two thirds of each glTF run. The one
+# suppression (fuzz/lsan.supp) names a frame only full stacks reach, so should its leak
+# come back the run stops on it (a false alarm, never a hidden leak): rerun the artifact
+# with ASAN_OPTIONS=detect_leaks=1:fast_unwind_on_malloc=0 to tell.
+export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:halt_on_error=1}"
 source scripts/sanitizer_env.sh
 
 # run_target NAME: seeds a corpus for NAME and fuzzes it for $seconds.
@@ -51,7 +56,8 @@ run_target() {
         for d in khronos wild fuzz-found ktx2; do
             if [ -d "$shared/scenes/$d" ]; then seed_dirs+=("$shared/scenes/$d"); fi
         done
-        python3 fuzz/make_seeds.py "$corpus" "${seed_dirs[@]}" --max-bytes "$max_bytes"
+        python3 fuzz/make_seeds.py "$corpus" "${seed_dirs[@]}" --max-bytes "$max_bytes" \
+            --image-cache "$build_dir/fuzz-seed-images"
         extra=(-dict=fuzz/gltf.dict -max_len="$max_bytes")
         binary="$build_dir/bin/gltf_loader_fuzzer"
     else

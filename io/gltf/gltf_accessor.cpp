@@ -60,47 +60,79 @@ T load(const uint8_t* p) {
     return v;
 }
 
-// Normalized conversion per glTF 2.0, section 3.11: signed values clamp at -1.
-float to_float(const uint8_t* p, int component_type, bool normalized) {
+// `count` elements of `n` components of type Src, `stride` bytes apart from p, each
+// component through `map` into out. The converters below switch on the component type
+// once per accessor, not per component: a component switch per element was most of the
+// time the loader spends on big meshes, and more so under the fuzzer's instrumentation.
+template <typename Src, typename T, typename Map>
+void convert_elements(const uint8_t* p, size_t count, size_t n, size_t stride, T* out, Map map) {
+    for (size_t i = 0; i < count; ++i, p += stride, out += n)
+        for (size_t c = 0; c < n; ++c) out[c] = map(load<Src>(p + c * sizeof(Src)));
+}
+
+// As convert_elements, for components stored as they are returned (float, uint32):
+// tightly packed ones are one copy.
+template <typename T>
+void copy_elements(const uint8_t* p, size_t count, size_t n, size_t stride, T* out) {
+    if (stride == n * sizeof(T)) {
+        std::memcpy(out, p, count * n * sizeof(T));  // glTF data need not be aligned
+        return;
+    }
+    convert_elements<T>(p, count, n, stride, out, [](T v) { return v; });
+}
+
+// Floats; normalized conversion per glTF 2.0, section 3.11: signed values clamp at -1.
+void convert_floats(const uint8_t* p, size_t count, size_t n, size_t stride, int component_type,
+                    bool normalized, float* out) {
     switch (component_type) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE: {
-            const float v = load<int8_t>(p);
-            return normalized ? std::max(v / 127.0f, -1.0f) : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-            const float v = load<uint8_t>(p);
-            return normalized ? v / 255.0f : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_SHORT: {
-            const float v = load<int16_t>(p);
-            return normalized ? std::max(v / 32767.0f, -1.0f) : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-            const float v = load<uint16_t>(p);
-            return normalized ? v / 65535.0f : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_INT: {
-            const double v = load<int32_t>(p);
-            return float(normalized ? std::max(v / 2147483647.0, -1.0) : v);
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-            const double v = load<uint32_t>(p);
-            return float(normalized ? v / 4294967295.0 : v);
-        }
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+            return convert_elements<int8_t>(p, count, n, stride, out, [normalized](float v) {
+                return normalized ? std::max(v / 127.0f, -1.0f) : v;
+            });
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return convert_elements<uint8_t>(p, count, n, stride, out, [normalized](float v) {
+                return normalized ? v / 255.0f : v;
+            });
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+            return convert_elements<int16_t>(p, count, n, stride, out, [normalized](float v) {
+                return normalized ? std::max(v / 32767.0f, -1.0f) : v;
+            });
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return convert_elements<uint16_t>(p, count, n, stride, out, [normalized](float v) {
+                return normalized ? v / 65535.0f : v;
+            });
+        case TINYGLTF_COMPONENT_TYPE_INT:
+            return convert_elements<int32_t>(p, count, n, stride, out, [normalized](double v) {
+                return float(normalized ? std::max(v / 2147483647.0, -1.0) : v);
+            });
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+            return convert_elements<uint32_t>(p, count, n, stride, out, [normalized](double v) {
+                return float(normalized ? v / 4294967295.0 : v);
+            });
         default:
-            return load<float>(p);
+            return copy_elements(p, count, n, stride, out);
     }
 }
 
-uint32_t to_uint(const uint8_t* p, int component_type, bool) {
+// Unsigned integers by value (indices: unsigned byte, short or int).
+void convert_uints(const uint8_t* p, size_t count, size_t n, size_t stride, int component_type,
+                   bool, uint32_t* out) {
     switch (component_type) {
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-            return load<uint8_t>(p);
+            return convert_elements<uint8_t>(p, count, n, stride, out,
+                                             [](uint32_t v) { return v; });
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-            return load<uint16_t>(p);
+            return convert_elements<uint16_t>(p, count, n, stride, out,
+                                              [](uint32_t v) { return v; });
         default:
-            return load<uint32_t>(p);
+            return copy_elements(p, count, n, stride, out);
     }
+}
+
+uint32_t to_uint(const uint8_t* p, int component_type) {
+    uint32_t v;
+    convert_uints(p, 1, 1, 0, component_type, false, &v);
+    return v;
 }
 
 // The first byte of `count` elements of `elem_size` bytes, `stride` apart, starting
@@ -157,13 +189,12 @@ void apply_sparse(const GltfContext& ctx, int index, Convert convert, std::vecto
                                        size_t(std::max(0, s.values.byteOffset)), size_t(s.count),
                                        n * csize, n * csize);
     for (size_t k = 0; k < size_t(s.count); ++k) {
-        const uint32_t target = to_uint(idx + k * isize, index_type, false);
+        const uint32_t target = to_uint(idx + k * isize, index_type);
         if (target >= a.count)
             ctx.fail(user, "index " + std::to_string(target) + " out of range (" +
                                std::to_string(a.count) + " elements)");
-        for (size_t c = 0; c < n; ++c)
-            out[target * n + c] =
-                convert(val + k * n * csize + c * csize, a.componentType, a.normalized);
+        convert(val + k * n * csize, 1, n, n * csize, a.componentType, a.normalized,
+                &out[target * n]);
     }
 }
 
@@ -203,9 +234,7 @@ std::vector<T> read_all(const GltfContext& ctx, int index, Convert convert) {
         const uint8_t* p = checked_bytes(ctx, user, view, a.byteOffset, a.count, elem_size, stride);
         // count is now bounded by the buffer's size, so this allocation is too.
         out.resize(a.count * n);
-        for (size_t i = 0; i < a.count; ++i)
-            for (size_t c = 0; c < n; ++c)
-                out[i * n + c] = convert(p + i * stride + c * csize, a.componentType, a.normalized);
+        if (a.count > 0) convert(p, a.count, n, stride, a.componentType, a.normalized, out.data());
     }
     if (a.sparse.isSparse) apply_sparse(ctx, index, convert, out);
     return out;
@@ -270,7 +299,7 @@ std::vector<uint8_t> buffer_view_bytes(const GltfContext& ctx, const std::string
 }
 
 std::vector<float> read_floats(const GltfContext& ctx, int index) {
-    return read_all<float>(ctx, index, to_float);
+    return read_all<float>(ctx, index, convert_floats);
 }
 
 std::vector<uint32_t> read_uints(const GltfContext& ctx, int index) {
@@ -281,7 +310,7 @@ std::vector<uint32_t> read_uints(const GltfContext& ctx, int index) {
          a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
         ctx.fail(element("accessors", size_t(index)),
                  "expected SCALAR of unsigned byte, short or int, got " + describe_accessor(a));
-    return read_all<uint32_t>(ctx, index, to_uint);
+    return read_all<uint32_t>(ctx, index, convert_uints);
 }
 
 }  // namespace penumbra

@@ -40,6 +40,15 @@ const char* sniff_extension(const std::vector<uint8_t>& b) {
     return nullptr;
 }
 
+// The format to ask OIIO for pixels of `type`: UNKNOWN (the file's own) when that is
+// `type`. OIIO 2.4 reads an explicitly named format, even the file's own, through a
+// conversion buffer of tens of megabytes whatever the image's size; the file's own format
+// goes straight into ours (a 64x64 PNG: 0.10 ms instead of 0.16 ms, and under ASan
+// 0.24 ms instead of 17 ms).
+OIIO::TypeDesc read_format(const OIIO::ImageSpec& spec, OIIO::TypeDesc type) {
+    return spec.format == type && spec.channelformats.empty() ? OIIO::TypeDesc::UNKNOWN : type;
+}
+
 // One line, for SceneError: OIIO's messages may span several.
 std::string one_line(std::string s) {
     for (char& c : s)
@@ -107,7 +116,8 @@ Image decode_float(const std::vector<uint8_t>& bytes, const std::string& name, c
         [&](OIIO::ImageInput& in, const OIIO::ImageSpec& spec, int channels) {
             Image img(spec.width, spec.height, channels);
             img.name = name;
-            if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
+            if (!in.read_image(0, 0, 0, channels, read_format(spec, OIIO::TypeDesc::FLOAT),
+                               img.pixels.data()))
                 throw ImageDecodeError(name, one_line(in.geterror()));
             // The transfer applies to colour, never to alpha (glTF 2.0,
             // section 3.9.2).
@@ -137,7 +147,7 @@ TextureImage decode_texels(const std::vector<uint8_t>& bytes, const std::string&
                                                : OIIO::TypeDesc::FLOAT;
             const bool srgb = encoding == ImageEncoding::Srgb;
             TextureImage img(spec.width, spec.height, channels, format, srgb, mipmaps);
-            if (!in.read_image(0, 0, 0, channels, type, img.level0_data()))
+            if (!in.read_image(0, 0, 0, channels, read_format(spec, type), img.level0_data()))
                 throw ImageDecodeError(name, one_line(in.geterror()));
             if (format == TexelFormat::F32 && srgb) {
                 // Float colour data with the sRGB transfer (not a glTF format, but OIIO

@@ -1,7 +1,8 @@
 // fuzz/make_seeds.py: the real files of ../shared/scenes/wild become self-contained seeds
-// (external buffers and images inlined, since the fuzz target's input stands alone), each
-// of which loads (or names the compression extension it needs), and seeds over the size
-// limit are left out.
+// (external buffers and images inlined, since the fuzz target's input stands alone, and
+// images scaled down to 64 pixels a side with their buffers repacked), each of which loads
+// (or names the compression extension it needs), and seeds over the size limit are left
+// out.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -43,12 +44,24 @@ TEST(MakeSeeds, WildFilesBecomeSelfContainedSeedsThatLoad) {
         }
         testing::internal::GetCapturedStderr();
     }
-    // Each .gltf gives a .gltf and a .glb seed; over 1 MiB (FlightHelmet with its
-    // textures, SpecGlossVsMetalRough, ...) are left out.
+    // Each .gltf gives a .gltf and a .glb seed; over 1 MiB (FlightHelmet, whose 3 MB
+    // of geometry stays) are left out.
     EXPECT_TRUE(fs::exists(out + "/CesiumBoxWebp_CesiumBoxWebp-Required.glb"));
     EXPECT_TRUE(fs::exists(out + "/Fox_Fox.glb"));
     EXPECT_TRUE(fs::exists(out + "/UnlitTest_UnlitTest.gltf"));  // its UnlitTest.bin inlined
     EXPECT_FALSE(fs::exists(out + "/FlightHelmet_FlightHelmet.gltf"));
+    // Scaled-down images make these fit: SpecGlossVsMetalRough's five 2048x2048 PNGs
+    // (15 MB), in the .gltf (data: URIs) and the .glb made from it, and the 1.7 MB of
+    // images in NormalTangentTest.glb's BIN chunk, which is repacked. The scaling needs
+    // oiiotool (openimageio-tools, which scripts/setup.sh installs).
+    if (std::system("command -v oiiotool >/dev/null") != 0)
+        GTEST_SKIP() << "no oiiotool: seed images are not scaled down";
+    for (const char* name : {"/SpecGlossVsMetalRough_SpecGlossVsMetalRough.gltf",
+                             "/SpecGlossVsMetalRough_SpecGlossVsMetalRough.glb",
+                             "/NormalTangentTest_NormalTangentTest.glb"}) {
+        ASSERT_TRUE(fs::exists(out + name)) << name;
+        EXPECT_LT(fs::file_size(out + name), 256u << 10) << name;
+    }
     EXPECT_GE(seeds, 10u);
 }
 

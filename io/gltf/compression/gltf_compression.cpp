@@ -9,7 +9,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
@@ -127,7 +126,7 @@ std::optional<CompressedGltf> prepare_compressed_gltf(const std::string& path, b
         text = read(read_u32(head, 12));
         if (text.size() != read_u32(head, 12)) return std::nullopt;
     } else {
-        text = std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        text = read(file_size);  // one allocation, not one per doubling
     }
     if (text.find("_compression") == std::string::npos) return std::nullopt;  // most files
     json gltf = json::parse(text, nullptr, false);
@@ -141,8 +140,7 @@ std::optional<CompressedGltf> prepare_compressed_gltf(const std::string& path, b
         return out;
     }
     while (text.size() % 4 != 0) text += ' ';  // JSON chunks pad with spaces (4.4.3.1)
-    const std::string rest((std::istreambuf_iterator<char>(in)),
-                           std::istreambuf_iterator<char>());  // BIN and later chunks
+    const std::string rest = read(file_size);  // BIN and later chunks
     // Only well-framed files are rewritten (a consistent header length, a BIN chunk inside
     // the file): with a recomputed header tinygltf would trust a BIN length past the end.
     if (read_u32(head, 8) != file_size ||
