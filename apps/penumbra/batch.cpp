@@ -96,7 +96,10 @@ std::shared_ptr<const ViewList> entry_views(const RenderCommandOptions& o,
 // options' time.
 void add_jobs(const std::string& scene, const RenderCommandOptions& o, const std::string& where,
               std::vector<BatchJob>& jobs) {
-    BatchJob job{scene, o, where, 0};
+    BatchJob job;
+    job.scene = scene;
+    job.options = o;
+    job.where = where;
     if (job.options.name.empty()) job.options.name = default_name(o);
     validate(job.options, where.empty() ? "options" : where);
     job.views = entry_views(job.options, where);

@@ -1,5 +1,5 @@
 // Directional albedo E(mu, r) = int D V cos(theta_i) dwi of the Charlie sheen lobe
-// (materials/lobes/sheen.h), tabulated once per process, for KHR_materials_sheen's albedo
+// (materials/lobes/sheen.h), tabulated at build time, for KHR_materials_sheen's albedo
 // scaling of the layers below: min(1 - max3(color) E(mu_o), 1 - max3(color) E(mu_i)).
 #pragma once
 
@@ -14,7 +14,7 @@ struct SheenAlbedoGrid {
 };
 
 // E at cos(theta) = mu for sheen roughness r (both clamped to [0, 1]), bilinear in the
-// table. The table is built on first use (tens of milliseconds, in parallel).
+// table the build integrated (sheen_albedo_table.h).
 float sheen_albedo(float mu, float r);
 
 // E by quadrature: n_cos Gauss-Legendre nodes in cos(theta_i) times n_phi midpoints in

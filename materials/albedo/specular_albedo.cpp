@@ -62,7 +62,7 @@ SpecularAlbedo::SpecularAlbedo(MicrofacetType type, float alpha) {
         std::sqrt(std::sqrt(std::clamp(alpha, 0.0f, 1.0f))) * (SpecularAlbedoTable::R - 1);
     m_row = std::min(static_cast<int>(t), SpecularAlbedoTable::R - 2);
     m_frac = t - m_row;
-    // Integrated when penumbra is built (specular_albedo_generator.cpp): nothing to
+    // Integrated when penumbra is built (albedo_generator.cpp): nothing to
     // compute at start-up or on first use, which saves about 5% of a short render, and
     // 0.1 s of CPU on a scene whose textures use every roughness (FlightHelmet).
     m_table = type == MicrofacetType::Beckmann ? &kSpecularAlbedoBeckmann : &kSpecularAlbedoGgx;

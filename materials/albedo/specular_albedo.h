@@ -8,7 +8,7 @@
 //     A(mu) = int D G / (4 n.v n.l) n.l dl,   B(mu) = int (1 - v.h)^5 D G / (4 n.v n.l) n.l dl.
 // A and B depend only on mu and alpha, so one table per distribution serves every
 // material. Like Kulla & Conty (2017) and Turquin (2019) we integrate them numerically
-// instead of shipping a fitted table: at build time (specular_albedo_generator.cpp
+// instead of shipping a fitted table: at build time (albedo_generator.cpp
 // writes the table that the library compiles in), so a render computes nothing.
 #pragma once
 

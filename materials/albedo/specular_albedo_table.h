@@ -1,6 +1,6 @@
 // The grid of the specular albedo table (specular_albedo.h) and how one row of it is
 // integrated: shared by the library, which reads the table the build generated, and by
-// the generator that writes it (specular_albedo_generator.cpp).
+// the generator that writes it (albedo_generator.cpp).
 #pragma once
 
 #include "materials/albedo/specular_albedo.h"
@@ -31,7 +31,7 @@ int specular_albedo_column_below(float mu);
 // Integrates row j of type's table (A and B at every column, and the row's average).
 void integrate_specular_albedo_row(MicrofacetType type, int j, SpecularAlbedoTable& t);
 
-// The tables the build integrated (build/materials/generated/specular_albedo_table.inc).
+// The tables the build integrated (build/materials/generated/albedo_tables.inc).
 extern const SpecularAlbedoTable kSpecularAlbedoGgx;
 extern const SpecularAlbedoTable kSpecularAlbedoBeckmann;
 

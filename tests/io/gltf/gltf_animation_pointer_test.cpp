@@ -72,6 +72,13 @@ TEST(GltfPointer, WritesCoreAndExtensionPropertiesOfACopy) {
     EXPECT_FALSE(write_property(m, "extensions/KHR_materials_ior/ior", &strength, 1));
     EXPECT_FALSE(write_property(
         m, "normalTexture/extensions/KHR_texture_transform/rotation", &strength, 1));
+    // The core textureInfos one level up (normalTexture), as PotOfCoalsAnimationPointer
+    // animates its normal map's rotation.
+    m.normalTexture.index = 1;
+    m.normalTexture.extensions["KHR_texture_transform"] = tinygltf::Value(tinygltf::Value::Object{});
+    EXPECT_TRUE(write_property(
+        m, "normalTexture/extensions/KHR_texture_transform/rotation", &strength, 1));
+    EXPECT_EQ(m.normalTexture.extensions["KHR_texture_transform"].Get("rotation").GetNumberAsDouble(), 7);
     tinygltf::Light point;
     point.type = "point";
     EXPECT_FALSE(write_property(point, "spot/outerConeAngle", &strength, 1));

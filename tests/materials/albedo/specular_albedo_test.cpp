@@ -43,7 +43,7 @@ TEST(SpecularAlbedo, TableMatchesBruteForceBetweenNodes) {
 }
 
 TEST(SpecularAlbedo, CompiledTableIsTheIntegratedOne) {
-    // The build integrates the table (specular_albedo_generator.cpp); the rows it
+    // The build integrates the table (albedo_generator.cpp); the rows it
     // compiled in are exactly what integrating them here gives, to the bit.
     for (MicrofacetType type : {MicrofacetType::Ggx, MicrofacetType::Beckmann}) {
         const SpecularAlbedoTable& compiled =

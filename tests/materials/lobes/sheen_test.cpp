@@ -7,9 +7,11 @@
 
 #include <array>
 #include <cmath>
+#include <memory>
 #include <cstdio>
 
 #include "materials/albedo/sheen_albedo.h"
+#include "materials/albedo/sheen_albedo_table.h"
 #include "support/bsdf/bsdf_properties.h"
 #include "support/statistics/quadrature.h"
 
@@ -60,6 +62,18 @@ TEST(SheenAlbedo, StaysBelowOneDownToTheSmallestRoughness) {
             EXPECT_LE(sheen_albedo(mu, r), 1.0f) << "mu " << mu << ", r " << r;
         }
     EXPECT_EQ(sheen_albedo(0.3f, 0), sheen_albedo(0.3f, CharlieSheen::kMinRoughness));
+}
+
+TEST(SheenAlbedo, CompiledTableIsTheIntegratedOne) {
+    // The build integrates the table (albedo_generator.cpp); the rows it compiled in
+    // are exactly what integrating them here gives, to the bit, and so what the
+    // renderer integrated on first use before the table moved to build time.
+    auto fresh = std::make_unique<SheenAlbedoTable>();
+    for (int j : {0, 1, 13, SheenAlbedoTable::R - 1}) {
+        integrate_sheen_albedo_row(j, *fresh);
+        for (int i = 0; i < SheenAlbedoTable::M; ++i)
+            ASSERT_EQ(kSheenAlbedo.e[j][i], fresh->e[j][i]) << j << " " << i;
+    }
 }
 
 TEST(CharlieSheen, IsSymmetricAndFinite) {
