@@ -1,6 +1,9 @@
 // KHR_animation_pointer and KHR_node_visibility end to end: the pixels of an animated
 // colour and an animated visibility at still times (exact) and averaged over a shutter
-// (the time integral, within the noise of the sample count).
+// (the time integral, within the noise of the sample count). The scene
+// (support/animated_scene.h), seen from +Z: an unlit quad over [-1, 1]^2 whose base colour
+// goes LINEAR from red (0 s) to blue (1 s), and in front of its left half a green one,
+// shown (STEP) from 0 s and hidden from 0.5 s.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,51 +14,12 @@
 #include "integrators/render.h"
 #include "io/gltf/gltf_loader.h"
 #include "materials/material.h"
-#include "support/gltf_builder.h"
+#include "support/animated_scene.h"
 
 namespace penumbra {
 namespace {
 
 constexpr int kSize = 32;
-
-// Two unlit quads seen from +Z: the back one over [-1, 1]^2 at z = 0, its base colour
-// LINEAR from red (0 s) to blue (1 s); the front one over [-1, 0] x [-1, 1] at z = 0.5,
-// green, shown (STEP) from 0 s and hidden from 0.5 s.
-std::string scene_file(const test::ScratchDir& dir) {
-    test::GltfBuilder b;
-    const int back = b.add<float>({-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}, test::kFloat, "VEC3");
-    const int front = b.add<float>({-1, -1, 0.5f, 0, -1, 0.5f, 0, 1, 0.5f, -1, 1, 0.5f},
-                                   test::kFloat, "VEC3");
-    const int idx = b.add<uint16_t>({0, 1, 2, 0, 2, 3}, test::kUShort, "SCALAR");
-    const int times = b.add<float>({0, 1}, test::kFloat, "SCALAR");
-    const int colors = b.add<float>({1, 0, 0, 1, 0, 0, 1, 1}, test::kFloat, "VEC4");
-    const int vis_times = b.add<float>({0, 0.5f}, test::kFloat, "SCALAR");
-    const int vis = b.add<uint8_t>({1, 0}, test::kUByte, "SCALAR");
-    auto mesh = [&](int pos, int material) {
-        return "{\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
-               "},\"indices\":" + std::to_string(idx) + ",\"material\":" +
-               std::to_string(material) + "}]}";
-    };
-    auto channel = [](int s, const std::string& pointer) {
-        return "{\"sampler\":" + std::to_string(s) +
-               ",\"target\":{\"path\":\"pointer\",\"extensions\":{\"KHR_animation_pointer\":"
-               "{\"pointer\":\"" + pointer + "\"}}}}";
-    };
-    const std::string unlit = "\"extensions\":{\"KHR_materials_unlit\":{}}";
-    const std::string members =
-        "\"extensionsUsed\":[\"KHR_animation_pointer\",\"KHR_node_visibility\","
-        "\"KHR_materials_unlit\"],"
-        "\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorFactor\":[1,0,0,1]}," + unlit +
-        "},{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0,1,0,1]}," + unlit + "}],"
-        "\"meshes\":[" + mesh(back, 0) + "," + mesh(front, 1) + "],"
-        "\"nodes\":[{\"mesh\":0},{\"mesh\":1}],\"scenes\":[{\"nodes\":[0,1]}],"
-        "\"animations\":[{\"samplers\":[{\"input\":" + std::to_string(times) +
-        ",\"output\":" + std::to_string(colors) + "},{\"input\":" + std::to_string(vis_times) +
-        ",\"output\":" + std::to_string(vis) + ",\"interpolation\":\"STEP\"}],\"channels\":[" +
-        channel(0, "/materials/0/pbrMetallicRoughness/baseColorFactor") + "," +
-        channel(1, "/nodes/1/extensions/KHR_node_visibility/visible") + "]}]";
-    return b.write(dir, "animated.gltf", members, test::BufferStorage::DataUri);
-}
 
 // Mean RGB over the left (x < -1/16) or right (x > 1/16) half's pixels.
 struct Halves {
@@ -101,7 +65,7 @@ void expect_rgb(Vec3 got, Vec3 want, double tol, const std::string& what) {
 
 TEST(AnimatedPropertiesRender, StillTimesShowTheKeyedValues) {
     const test::ScratchDir dir;
-    const std::string path = scene_file(dir);
+    const std::string path = test::animated_scene(dir);
     // Every sample sees the same unlit colour: exact up to float sums.
     Halves h = render_halves(path, 0.25, 0.25, 4);
     expect_rgb(h.right, {0.75f, 0, 0.25f}, 1e-5, "0.25 s, back quad");
@@ -121,7 +85,7 @@ TEST(AnimatedPropertiesRender, StillTimesShowTheKeyedValues) {
 // of the nearest (half a step, 1/128 of the ramp) would make.
 TEST(AnimatedPropertiesRender, ShutterAveragesColourAndVisibilityOverTime) {
     const test::ScratchDir dir;
-    const Halves h = render_halves(scene_file(dir), 0, 1, 512);
+    const Halves h = render_halves(test::animated_scene(dir), 0, 1, 512);
     const double tol = 5 * 0.5 / std::sqrt(h.samples_per_half);
     EXPECT_LT(tol, 0.0055);
     expect_rgb(h.right, {0.5f, 0, 0.5f}, tol, "right half");

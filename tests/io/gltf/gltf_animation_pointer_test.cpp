@@ -13,6 +13,7 @@
 #include "io/gltf/animation/gltf_animation.h"
 #include "io/gltf/gltf_loader.h"
 #include "io/gltf/animation/gltf_pointer.h"
+#include "support/animated_scene.h"
 #include "support/gltf_builder.h"
 #include "support/material_gltf.h"
 #include "support/paths.h"
@@ -138,61 +139,6 @@ TEST(GltfAnimationPointer, NodeTransformsThroughPointersMoveInstances) {
     EXPECT_GT(moving, 0u);
 }
 
-// A unit quad at z = 0 (material 0, unlit, base colour LINEAR from red at 0 s to blue at
-// 1 s) and, in front of its left half, a green unlit quad (node 1) whose visibility is
-// STEP: shown from 0 s, hidden from 0.5 s. A point light (node 2) whose intensity goes
-// LINEAR from 10 to 30 cd, and a perspective camera (node 3) whose yfov goes from 0.5 to
-// 1.0 rad, both over [0, 1] s.
-std::string animated_scene(const test::ScratchDir& dir) {
-    test::GltfBuilder b;
-    const int back = b.add<float>({-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}, test::kFloat, "VEC3");
-    const int front = b.add<float>({-1, -1, 0.5f, 0, -1, 0.5f, 0, 1, 0.5f, -1, 1, 0.5f},
-                                   test::kFloat, "VEC3");
-    const int idx = b.add<uint16_t>({0, 1, 2, 0, 2, 3}, test::kUShort, "SCALAR");
-    const int times = b.add<float>({0, 1}, test::kFloat, "SCALAR");
-    const int colors = b.add<float>({1, 0, 0, 1, 0, 0, 1, 1}, test::kFloat, "VEC4");
-    const int vis_times = b.add<float>({0, 0.5f}, test::kFloat, "SCALAR");
-    const int vis = b.add<uint8_t>({1, 0}, test::kUByte, "SCALAR");
-    const int intensity = b.add<float>({10, 30}, test::kFloat, "SCALAR");
-    const int yfov = b.add<float>({0.5f, 1.0f}, test::kFloat, "SCALAR");
-    auto sampler = [](int in, int out, const char* interp) {
-        return "{\"input\":" + std::to_string(in) + ",\"output\":" + std::to_string(out) +
-               ",\"interpolation\":\"" + interp + "\"}";
-    };
-    auto channel = [](int s, const std::string& pointer) {
-        return "{\"sampler\":" + std::to_string(s) +
-               ",\"target\":{\"path\":\"pointer\",\"extensions\":{\"KHR_animation_pointer\":"
-               "{\"pointer\":\"" + pointer + "\"}}}}";
-    };
-    auto mesh = [&](int pos, int material) {
-        return "{\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
-               "},\"indices\":" + std::to_string(idx) + ",\"material\":" +
-               std::to_string(material) + "}]}";
-    };
-    const std::string unlit = "\"extensions\":{\"KHR_materials_unlit\":{}}";
-    const std::string members =
-        "\"extensionsUsed\":[\"KHR_animation_pointer\",\"KHR_node_visibility\","
-        "\"KHR_materials_unlit\",\"KHR_lights_punctual\"],"
-        "\"extensions\":{\"KHR_lights_punctual\":{\"lights\":[{\"type\":\"point\","
-        "\"intensity\":10}]}},"
-        "\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorFactor\":[1,0,0,1]}," + unlit +
-        "},{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0,1,0,1]}," + unlit + "}],"
-        "\"meshes\":[" + mesh(back, 0) + "," + mesh(front, 1) + "],"
-        "\"cameras\":[{\"type\":\"perspective\",\"perspective\":{\"yfov\":0.5,\"znear\":0.1}}],"
-        "\"nodes\":[{\"mesh\":0},{\"mesh\":1,\"extensions\":{\"KHR_node_visibility\":"
-        "{\"visible\":true}}},{\"translation\":[0,0,2],\"extensions\":{\"KHR_lights_punctual\":"
-        "{\"light\":0}}},{\"camera\":0,\"translation\":[0,0,5]}],"
-        "\"scenes\":[{\"nodes\":[0,1,2,3]}],"
-        "\"animations\":[{\"samplers\":[" +
-        sampler(times, colors, "LINEAR") + "," + sampler(vis_times, vis, "STEP") + "," +
-        sampler(times, intensity, "LINEAR") + "," + sampler(times, yfov, "LINEAR") +
-        "],\"channels\":[" + channel(0, "/materials/0/pbrMetallicRoughness/baseColorFactor") +
-        "," + channel(1, "/nodes/1/extensions/KHR_node_visibility/visible") + "," +
-        channel(2, "/extensions/KHR_lights_punctual/lights/0/intensity") + "," +
-        channel(3, "/cameras/0/perspective/yfov") + "]}]";
-    return b.write(dir, "animated.gltf", members, test::BufferStorage::DataUri);
-}
-
 Scene load_at(const std::string& path, double open, double close) {
     GltfLoadOptions options;
     options.shutter_open = open;
@@ -207,7 +153,7 @@ bool has_node(const Scene& s, int node) {
 
 TEST(GltfAnimationPointer, StillTimeTakesTheAnimatedValues) {
     const test::ScratchDir dir;
-    const std::string path = animated_scene(dir);
+    const std::string path = test::animated_scene(dir);
     for (double t : {0.0, 0.25, 0.75, 1.0, 3.0}) {
         const Scene s = load_at(path, t, t);
         const double u = std::min(t, 1.0);
@@ -234,7 +180,7 @@ TEST(GltfAnimationPointer, StillTimeTakesTheAnimatedValues) {
 
 TEST(GltfAnimationPointer, ShutterGivesTimeSteps) {
     const test::ScratchDir dir;
-    const Scene s = load_at(animated_scene(dir), 0.25, 0.75);
+    const Scene s = load_at(test::animated_scene(dir), 0.25, 0.75);
     // The material at open, then 65 steps across [0.25, 0.75] s.
     EXPECT_NEAR(s.materials[0].base_color.x, 0.75, 1e-6);
     ASSERT_GE(s.material_steps.size(), 1u);
