@@ -3,6 +3,7 @@ for a bundled scene and a wild asset's orbit views; bad files and options raise 
 exceptions; the GIL is released while rendering. Run by ctest (PythonModule) with
 PYTHONPATH=build/python and PENUMBRA_CLI set to the CLI."""
 
+import json
 import os
 import subprocess
 import tempfile
@@ -90,12 +91,32 @@ class ModuleMatchesCli(unittest.TestCase):
                 exr = read_exr(os.path.join(tmp, f"{v:04d}.exr"))
                 self.assert_bitwise(image, exr, ["rgba", "normal", "depth"])
             # The camera the module reports is transforms.json's, which the CLI wrote.
-            import json
             with open(os.path.join(tmp, "transforms.json")) as f:
                 frames = json.load(f)["frames"]
             for v, image in enumerate(images):
                 np.testing.assert_allclose(image["camera"]["transform_matrix"],
                                            frames[v]["transform_matrix"], rtol=0, atol=1e-6)
+
+    def test_a_cameras_file_gives_the_cli_views(self):
+        cameras = [{"name": "high", "position": [0.5, 1.5, 3.5], "look_at": [0, 1, 0], "yfov": 50},
+                   {"matrix": [[1, 0, 0, 0.2], [0, 1, 0, 1], [0, 0, 1, 3.9], [0, 0, 0, 1]]}]
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "cams.json")
+            with open(path, "w") as f:
+                json.dump(cameras, f)
+            scene = penumbra.load(CORNELL, width=32, height=24, views=path, aov="depth")
+            images = [scene.render(view=v, spp=2) for v in range(scene.view_count())]
+            self.assertEqual(len(images), 2)
+            self.assertEqual(images[0]["camera"]["name"], "high")
+            cli_render(CORNELL, os.path.join(tmp, "{view}.exr"), "--views", path, "--width",
+                       "32", "--height", "24", "--spp", "2", "--aov", "depth")
+            for v, image in enumerate(images):
+                self.assert_bitwise(image, read_exr(os.path.join(tmp, f"{v:04d}.exr")),
+                                    ["rgba", "depth"])
+            with open(path, "w") as f:
+                json.dump([{"position": [0, 1], "look_at": [0, 0, 0]}], f)
+            with self.assertRaisesRegex(penumbra.SceneError, r"cams\.json: \[0\]\.position"):
+                penumbra.load(CORNELL, width=32, height=24, views=path).render(view=0, spp=1)
 
     def test_a_view_out_of_range_is_a_value_error(self):
         scene = penumbra.load(CORNELL, width=16, height=12, views="orbit:2")
