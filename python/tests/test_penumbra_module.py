@@ -28,6 +28,7 @@ CHANNELS = {
     "albedo": ["Albedo.R", "Albedo.G", "Albedo.B"],
     "normal": ["Normal.X", "Normal.Y", "Normal.Z"],
     "depth": ["Depth.Z"],
+    "noisy": ["Noisy.R", "Noisy.G", "Noisy.B"],
 }
 
 
@@ -77,6 +78,13 @@ class ModuleMatchesCli(unittest.TestCase):
                        "--seed", "7", "--exposure", "1.5", "--aov", "albedo,normal,depth",
                        "--overwrite")
             self.assert_bitwise(again, read_exr(out), ["rgba", "albedo", "normal", "depth"])
+            # Denoised: the denoiser's image as the beauty, the film's as "noisy".
+            denoised = scene.render(denoise=True, aov="depth")
+            self.assertEqual(scene.loads, 1)
+            cli_render(CORNELL, out, "--width", "48", "--height", "36", "--spp", "4",
+                       "--denoise", "--aov", "depth", "--overwrite")
+            self.assert_bitwise(denoised, read_exr(out), ["rgba", "noisy", "depth"])
+            self.assertFalse(np.array_equal(denoised["rgba"][..., :3], denoised["noisy"]))
 
     def test_wild_asset_orbit_views_equal_the_cli_exrs(self):
         scene = penumbra.load(FOX, width=40, height=32, views="orbit:2", aov="depth,normal")
