@@ -26,11 +26,22 @@ const OptionDecl* python_option(const std::string& key) {
     return find_option(flag);
 }
 
+// Farm options split a job across tasks, and a frame list is many images: neither is one
+// render's. Render frames one at a time with frame=N.
+bool python_key(const OptionDecl& d) { return d.scope != OptionScope::Farm && d.flag != "frames"; }
+
+// The keyword: the job key, else the flag with '_' for '-' (threads, checkpoint_interval).
+std::string python_name(const OptionDecl& d) {
+    std::string name = d.job_key.empty() ? d.flag : d.job_key;
+    std::replace(name.begin(), name.end(), '-', '_');
+    return name;
+}
+
 std::string known_keys() {
     std::string list;
     for (const OptionDecl& d : render_option_table())
-        if (d.scope != OptionScope::Farm)
-            list += (list.empty() ? "" : ", ") + (d.job_key.empty() ? d.flag : d.job_key);
+        if (python_key(d))
+            list += (list.empty() ? "" : ", ") + python_name(d);
     return list;
 }
 
@@ -56,12 +67,11 @@ RenderCommandOptions options_with(const RenderCommandOptions& o, const py::dict&
     for (const auto& [k, v] : kwargs) {
         const std::string key = py::str(k);
         const OptionDecl* d = python_option(key);
-        if (!d || d->scope == OptionScope::Farm)
+        if (d && d->flag == "frames")
+            throw py::value_error(key + ": render one frame at a time with frame=N");
+        if (!d || !python_key(*d))
             throw py::value_error(key + ": unknown option (expected one of: " + known_keys() +
                                   ")");
-        // A frame list is many images; render them one at a time with frame=N.
-        if (d->flag == "frames")
-            throw py::value_error(key + ": render one frame at a time with frame=N");
         try {
             const std::string text = job_value_text(*d, as_json(v), cwd);
             d->set(scratch, text);
@@ -90,13 +100,13 @@ void bind_options(py::module_& m) {
         []() {
             py::dict out;
             for (const OptionDecl& d : render_option_table()) {
-                if (d.scope == OptionScope::Farm) continue;
+                if (!python_key(d)) continue;
                 py::dict entry;
                 entry["flag"] = "--" + d.flag;
                 entry["help"] = d.help;
                 entry["default"] = d.get ? d.get(RenderCommandOptions()) : std::string();
                 entry["choices"] = d.choices;
-                out[py::str(d.job_key.empty() ? d.flag : d.job_key)] = entry;
+                out[py::str(python_name(d))] = entry;
             }
             return out;
         },
