@@ -2,9 +2,11 @@
 
 #include <pybind11/stl.h>
 
+#include <csignal>
 #include <memory>
 #include <optional>
 
+#include "apps/penumbra/interrupt.h"
 #include "core/log.h"
 #include "python/py_arrays.h"
 #include "python/py_options.h"
@@ -37,15 +39,33 @@ PyScene load(const std::string& path, const py::kwargs& kwargs) {
     return scene;
 }
 
+bool on_main_thread() {
+    const py::module_ threading = py::module_::import("threading");
+    return threading.attr("current_thread")().is(threading.attr("main_thread")());
+}
+
 py::dict render(PyScene& scene, std::optional<int> view, const py::kwargs& kwargs) {
     const RenderCommandOptions o = options_with(scene.options, kwargs);
     apply_log_level(o);
     std::optional<RenderedImage> image;
+    int signal_status = 0;
     {
+        // Python's own handler only sets a flag that this thread, in C++, would not see
+        // until the render ends: on the main thread, where signals arrive, the CLI's
+        // handler counts them and the render stops after its current pass.
+        std::optional<InterruptScope> interrupt;
+        if (on_main_thread()) interrupt.emplace();
         // Other Python threads run while this one renders; the renderer serialises renders
         // of one scene itself.
         py::gil_scoped_release release;
-        image.emplace(scene.renderer->render(o, view.value_or(-1)));
+        image.emplace(scene.renderer->render(o, view.value_or(-1),
+                                             interrupt ? &interrupt->count() : nullptr));
+        if (interrupt) signal_status = interrupt->exit_status();
+    }
+    if (signal_status == 128 + SIGTERM) std::raise(SIGTERM);  // Python's handler now
+    if (image->interrupted) {
+        PyErr_SetNone(PyExc_KeyboardInterrupt);
+        throw py::error_already_set();
     }
     return to_python(*image);
 }
@@ -74,7 +94,8 @@ one array per AOV layer, named in lower case ("depth" (H, W), "normal" (H, W, 3)
 "albedo", ...; --aov names them); "camera" (name, transform_matrix camera to world in
 OpenGL axes as transforms.json writes it, yfov, fl_x, fl_y, cx, cy); "spp"; "seconds".
 All float32, rows top down. The same options give bitwise the pixels of the CLI's EXR
-(before --half rounds them). The GIL is released while rendering.)";
+(before --half rounds them). The GIL is released while rendering. On the main thread,
+Ctrl-C stops the render after its current pass and raises KeyboardInterrupt.)";
 
 }  // namespace
 

@@ -110,7 +110,8 @@ size_t SceneRenderer::view_count(const RenderCommandOptions& o) {
     return m_setup->views.size();
 }
 
-RenderedImage SceneRenderer::render(const RenderCommandOptions& o, int view) {
+RenderedImage SceneRenderer::render(const RenderCommandOptions& o, int view,
+                                    const std::atomic<int>* interrupts) {
     check_options(o);
     if (o.views.empty() && view >= 0)
         throw std::invalid_argument("view=" + std::to_string(view) +
@@ -126,12 +127,16 @@ RenderedImage SceneRenderer::render(const RenderCommandOptions& o, int view) {
                                         o.views + "'");
         use_view(s, size_t(view), o);
     }
-    const RenderOptions ropt = render_options_for(o, m_path);
+    RenderOptions ropt = render_options_for(o, m_path);
+    ropt.interrupts = interrupts;
     RenderStats stats;
     const Film film = penumbra::render(s.context(), *s.camera, *s.integrator, ropt, &stats);
+    RenderedImage out;
+    // A partial image is not the one asked for: the caller raises instead.
+    out.interrupted = stats.interrupted || stats.aborted;
+    if (out.interrupted) return out;
     const std::unique_ptr<DenoiseStep> denoised =
         o.denoise && stats.spp >= kDenoiseMinSpp ? denoise_film(film, o.threads) : nullptr;
-    RenderedImage out;
     collect_images(film, denoised.get(), s, o, out);
     out.camera = s.camera_desc;
     out.spp = stats.spp;

@@ -4,6 +4,7 @@
 // converts them), and the view's camera. No Python here: the bindings convert at the edge.
 #pragma once
 
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -28,6 +29,7 @@ struct RenderedImage {
     CameraDesc camera;                // the view's, lens overrides applied
     uint32_t spp = 0;
     double seconds = 0;               // the render loop's
+    bool interrupted = false;         // stopped early by RenderOptions::interrupts
 };
 
 class SceneRenderer {
@@ -38,7 +40,10 @@ public:
     // Renders view `view` of o.views (-1: no views, the file's or the automatic camera).
     // Options the set-up reads (lights, camera, size, colour, ...) differ from the loaded
     // scene's: set up again first, as a new command would. Serialised per scene.
-    RenderedImage render(const RenderCommandOptions& o, int view);
+    // interrupts: as RenderOptions::interrupts (null: none); a render stopped by them has
+    // stopped() set.
+    RenderedImage render(const RenderCommandOptions& o, int view,
+                         const std::atomic<int>* interrupts = nullptr);
 
     // How many views o.views gives for this scene (0 without views).
     size_t view_count(const RenderCommandOptions& o);

@@ -5,6 +5,7 @@ PYTHONPATH=build/python and PENUMBRA_CLI set to the CLI."""
 
 import json
 import os
+import signal
 import subprocess
 import tempfile
 import threading
@@ -189,6 +190,21 @@ class Gil(unittest.TestCase):
         # Holding the GIL, the render would leave no tick between its start and its end.
         during = [t for t in ticks if t0 + 0.02 < t < t1 - 0.02]
         self.assertGreater(len(during), 20)
+
+    def test_ctrl_c_stops_a_render_with_keyboard_interrupt(self):
+        scene = penumbra.load(CORNELL, width=96, height=72)
+        timer = threading.Timer(0.3, os.kill, (os.getpid(), signal.SIGINT))
+        timer.start()
+        t0 = time.perf_counter()
+        with self.assertRaises(KeyboardInterrupt):
+            scene.render(spp=1 << 20)  # hours, unless stopped
+        timer.join()
+        self.assertLess(time.perf_counter() - t0, 30)
+        # Python's own handler is back, and the scene renders on.
+        self.assertEqual(scene.render(spp=1)["spp"], 1)
+        with self.assertRaises(KeyboardInterrupt):
+            os.kill(os.getpid(), signal.SIGINT)
+            time.sleep(1)
 
 
 if __name__ == "__main__":
