@@ -62,7 +62,13 @@ py::dict render(PyScene& scene, std::optional<int> view, const py::kwargs& kwarg
                                              interrupt ? &interrupt->count() : nullptr));
         if (interrupt) signal_status = interrupt->exit_status();
     }
-    if (signal_status == 128 + SIGTERM) std::raise(SIGTERM);  // Python's handler now
+    if (signal_status != 0) {
+        // The signal again, now that Python's handlers are back: Ctrl-C raises
+        // KeyboardInterrupt (even after a render that finished), SIGTERM does what the
+        // program asked for (by default, ends it).
+        std::raise(signal_status - 128);
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    }
     if (image->interrupted) {
         PyErr_SetNone(PyExc_KeyboardInterrupt);
         throw py::error_already_set();
