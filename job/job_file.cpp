@@ -20,7 +20,7 @@ using nlohmann::json;
 namespace {
 
 // A value of a JSON type the option's kind takes, as the option's text.
-std::string option_text(const OptionDecl& d, const json& v) {
+std::string kind_text(const OptionDecl& d, const json& v) {
     switch (d.kind) {
         case OptionKind::Flag:
             if (!v.is_boolean()) throw std::invalid_argument("expected true or false");
@@ -70,15 +70,7 @@ JobSettings read_settings(const json& object, const std::string& where, const fs
             throw SceneError(where + "." + key + ": unknown key (expected one of: " +
                              known_keys() + ")");
         try {
-            std::string text = option_text(*d, value);
-            // "builtin" (--ocio-config) names the built-in config, not a file.
-            const bool is_choice = std::find(d->choices.begin(), d->choices.end(), text) !=
-                                   d->choices.end();
-            const bool is_keyword =
-                !d->keyword_prefix.empty() && text.rfind(d->keyword_prefix, 0) == 0;
-            if (d->kind == OptionKind::Path && !is_choice && !is_keyword &&
-                fs::path(text).is_relative())
-                text = (base / text).lexically_normal().string();
+            const std::string text = job_value_text(*d, value, base.string());
             d->set(scratch, text);
             settings.push_back({d, text});
         } catch (const std::invalid_argument& e) {
@@ -89,6 +81,17 @@ JobSettings read_settings(const json& object, const std::string& where, const fs
 }
 
 }  // namespace
+
+std::string job_value_text(const OptionDecl& d, const json& value, const std::string& base) {
+    std::string text = kind_text(d, value);
+    // "builtin" (--ocio-config) names the built-in config, not a file.
+    const bool is_choice =
+        std::find(d.choices.begin(), d.choices.end(), text) != d.choices.end();
+    const bool is_keyword = !d.keyword_prefix.empty() && text.rfind(d.keyword_prefix, 0) == 0;
+    if (d.kind == OptionKind::Path && !is_choice && !is_keyword && fs::path(text).is_relative())
+        text = (fs::path(base) / text).lexically_normal().string();
+    return text;
+}
 
 JobFile parse_job_file(const std::string& text, const std::string& path) {
     json root;

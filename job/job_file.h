@@ -3,6 +3,8 @@
 // frame-list syntax shared by --frames and the job file's "frames".
 #pragma once
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <string>
 #include <vector>
 
@@ -36,6 +38,13 @@ struct JobFile {
 JobFile read_job_file(const std::string& path);
 // As read_job_file, from text; `path` names it in messages and anchors relative paths.
 JobFile parse_job_file(const std::string& text, const std::string& path);
+
+// One key's JSON value as the option's text (the text `set` reads), checked against the
+// option's kind (a flag takes true or false, Numbers an array of `count` numbers, ...), a
+// relative Path resolved against `base`. Job files and the Python module's keyword
+// arguments both go through it. Throws std::invalid_argument saying what is wrong.
+std::string job_value_text(const OptionDecl& d, const nlohmann::json& value,
+                           const std::string& base);
 
 // "12", "1-48", "1-48:4" (every 4th), or a comma-separated list of those, in order.
 // Throws std::invalid_argument with the reason.

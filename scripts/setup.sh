@@ -13,6 +13,9 @@ packages=(
     libdraco-dev libmeshoptimizer-dev
     libzstd-dev
     libcli11-dev
+    # The Python module (python/, build/python): pybind11's headers, Python's, and numpy,
+    # whose arrays it returns.
+    pybind11-dev python3-dev python3-numpy
 )
 if [ "${1:-}" = "--test" ]; then
     packages+=(
@@ -26,6 +29,8 @@ if [ "${1:-}" = "--test" ]; then
         # tests/apps/blender_roundtrip_test.cpp); its glTF importer needs numpy
         # (scripts/crosscheck/).
         blender blender-data python3-numpy
+        # The Python module's test reads the CLI's EXRs (python/tests/).
+        python3-openimageio
         # Embree's pathtracer tutorial and its Cornell box (scripts/crosscheck/efficiency.py
         # --embree).
         embree-tools

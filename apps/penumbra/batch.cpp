@@ -20,53 +20,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void apply(const JobSettings& settings, RenderCommandOptions& o) {
-    // A frame, frame range, time or shutter interval replaces the timing it inherits.
-    const bool timing = std::any_of(settings.begin(), settings.end(),
-                                    [](const JobSetting& s) { return s.option->timing; });
-    if (timing) {
-        o.frames.clear();
-        o.timeline.frame.reset();
-        o.timeline.time.reset();
-        o.timeline.shutter_open.reset();
-        o.timeline.shutter_close.reset();
-    }
-    for (const JobSetting& s : settings) {
-        if (s.option->job_set) s.option->job_set(o, s.text);
-        else s.option->set(o, s.text);
-    }
-}
-
-// Option values the command line checks with CLI11 but a job file can spell freely.
-void validate(const RenderCommandOptions& o, const std::string& where) {
-    try {
-        expand_output_name(o.output.empty() ? o.name : o.output, {});
-        TimelineSettings timeline = o.timeline;
-        if (!o.frames.empty()) {
-            if (timeline.frame) throw std::invalid_argument("--frame conflicts with --frames");
-            timeline.frame = 0;  // each frame of the list is checked the same way
-        }
-        resolve_shutter(timeline);
-        // Adaptive sampling gives every pixel at least two samples (its first pass is
-        // even), so only the budget can leave a half empty.
-        if (o.denoise && o.spp < kDenoiseMinSpp)
-            throw std::invalid_argument(
-                "denoise needs at least " + std::to_string(kDenoiseMinSpp) +
-                " samples per pixel, spp is " + std::to_string(o.spp) +
-                " (the denoiser compares two halves of each pixel's samples)");
-        if (o.lens.fstop > 0 && o.lens.aperture_radius >= 0)
-            throw std::invalid_argument("--fstop excludes --aperture-radius: give one");
-        // Adaptive sampling stops a pixel by the error of its 3x3 neighbourhood, so a
-        // band's edge rows would depend on rows another task renders.
-        if (o.bands > 1 && o.target_error > 0)
-            throw std::invalid_argument(
-                "\"bands\" cannot be combined with \"target_error\" (adaptive sampling "
-                "decides each pixel from its neighbours, across band edges)");
-    } catch (const std::invalid_argument& e) {
-        throw SceneError(where + ": " + e.what());
-    }
-}
-
 std::string default_name(const RenderCommandOptions& o) {
     if (!o.views.empty())
         return o.frames.empty() ? "{scene}/{view}.exr" : "{scene}/{view}_{frame}.exr";
@@ -101,7 +54,7 @@ void add_jobs(const std::string& scene, const RenderCommandOptions& o, const std
     job.options = o;
     job.where = where;
     if (job.options.name.empty()) job.options.name = default_name(o);
-    validate(job.options, where.empty() ? "options" : where);
+    validate_options(job.options, where.empty() ? "options" : where);
     job.views = entry_views(job.options, where);
     std::vector<int> frames;
     try {
@@ -124,15 +77,61 @@ void add_jobs(const std::string& scene, const RenderCommandOptions& o, const std
 
 }  // namespace
 
+void apply_settings(const JobSettings& settings, RenderCommandOptions& o, bool job_keys) {
+    // A frame, frame range, time or shutter interval replaces the timing it inherits.
+    const bool timing = std::any_of(settings.begin(), settings.end(),
+                                    [](const JobSetting& s) { return s.option->timing; });
+    if (timing) {
+        o.frames.clear();
+        o.timeline.frame.reset();
+        o.timeline.time.reset();
+        o.timeline.shutter_open.reset();
+        o.timeline.shutter_close.reset();
+    }
+    for (const JobSetting& s : settings) {
+        if (job_keys && s.option->job_set) s.option->job_set(o, s.text);
+        else s.option->set(o, s.text);
+    }
+}
+
+void validate_options(const RenderCommandOptions& o, const std::string& where) {
+    try {
+        expand_output_name(o.output.empty() ? o.name : o.output, {});
+        TimelineSettings timeline = o.timeline;
+        if (!o.frames.empty()) {
+            if (timeline.frame) throw std::invalid_argument("--frame conflicts with --frames");
+            timeline.frame = 0;  // each frame of the list is checked the same way
+        }
+        resolve_shutter(timeline);
+        // Adaptive sampling gives every pixel at least two samples (its first pass is
+        // even), so only the budget can leave a half empty.
+        if (o.denoise && o.spp < kDenoiseMinSpp)
+            throw std::invalid_argument(
+                "denoise needs at least " + std::to_string(kDenoiseMinSpp) +
+                " samples per pixel, spp is " + std::to_string(o.spp) +
+                " (the denoiser compares two halves of each pixel's samples)");
+        if (o.lens.fstop > 0 && o.lens.aperture_radius >= 0)
+            throw std::invalid_argument("--fstop excludes --aperture-radius: give one");
+        // Adaptive sampling stops a pixel by the error of its 3x3 neighbourhood, so a
+        // band's edge rows would depend on rows another task renders.
+        if (o.bands > 1 && o.target_error > 0)
+            throw std::invalid_argument(
+                "\"bands\" cannot be combined with \"target_error\" (adaptive sampling "
+                "decides each pixel from its neighbours, across band edges)");
+    } catch (const std::invalid_argument& e) {
+        throw SceneError(where + ": " + e.what());
+    }
+}
+
 std::vector<BatchJob> plan_batch(const RenderCommandOptions& o) {
     std::vector<BatchJob> jobs;
     if (!o.job_file.empty()) {
         const JobFile file = read_job_file(o.job_file);
         RenderCommandOptions defaults = o;
-        apply(file.defaults, defaults);
+        apply_settings(file.defaults, defaults);
         for (const JobEntry& entry : file.jobs) {
             RenderCommandOptions merged = defaults;
-            apply(entry.settings, merged);
+            apply_settings(entry.settings, merged);
             add_jobs(entry.scene, merged, entry.where, jobs);
         }
     }

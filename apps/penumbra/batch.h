@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "apps/penumbra/render_command.h"
+#include "job/job_file.h"
 #include "job/view_list.h"
 
 namespace penumbra {
@@ -29,6 +30,15 @@ struct BatchJob {
     // loaded scene and one accelerator; only the camera changes between them.
     size_t group = 0;
 };
+
+// Sets the settings over o in order, as a job entry's keys go over its defaults: a timing
+// key (frame, time, shutter) replaces all the timing o had. job_keys: a key with a job-file
+// meaning of its own takes it ("frame" is a frame list of one); else every key is `set`.
+void apply_settings(const JobSettings& settings, RenderCommandOptions& o, bool job_keys = true);
+// Checks what spans options, or what the command line checks with CLI11 but a job file or
+// a Python call can spell freely (a denoised render's samples, --fstop against
+// --aperture-radius, ...). Throws SceneError starting with `where`.
+void validate_options(const RenderCommandOptions& o, const std::string& where);
 
 // Expands scenes x frames x views and the job file's entries, in order. Throws SceneError for a
 // bad job file, frame list or option value, before anything renders.
