@@ -26,7 +26,8 @@ float light_visibility(const RenderContext& ctx, const SurfacePoint& sp, const S
 
 }  // namespace
 
-GuideRecord denoise_guide(const Ray& camera_ray, const RenderContext& ctx, uint64_t key) {
+GuideRecord denoise_guide(const Ray& camera_ray, const RenderContext& ctx, uint64_t key,
+                          const std::optional<Hit>* first_hit) {
     GuideRecord rec;
     Ray ray = camera_ray;
     // The same key as first_hit_aovs': with both, they pass the same alpha surfaces.
@@ -35,7 +36,8 @@ GuideRecord denoise_guide(const Ray& camera_ray, const RenderContext& ctx, uint6
     Vec3 from = camera_ray.o;
     float depth = 0;
     for (int bounce = 0;; ++bounce) {
-        const std::optional<VisibleSurface> s = first_visible_surface(ray, ctx, rng, bounce == 0);
+        const std::optional<VisibleSurface> s =
+            first_visible_surface(ray, ctx, rng, bounce == 0, bounce == 0 ? first_hit : nullptr);
         if (!s) return rec;
         const SurfacePoint& sp = s->sp;
         const ShadingData& sd = s->sd;

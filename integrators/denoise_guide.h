@@ -21,6 +21,8 @@ inline constexpr int kMaxGuideBounces = 8;
 // the path's length from the camera; visibility = whether one light sample from there is
 // unoccluded (its transmittance). Random numbers are hashed from `key` (seed, pixel,
 // sample) as first_hit_aovs' are, so the beauty's sample streams do not change.
-GuideRecord denoise_guide(const Ray& ray, const RenderContext& ctx, uint64_t key);
+// first_hit: the camera ray's closest hit where it was traced already, else nullptr.
+GuideRecord denoise_guide(const Ray& ray, const RenderContext& ctx, uint64_t key,
+                          const std::optional<Hit>* first_hit = nullptr);
 
 }  // namespace penumbra

@@ -6,10 +6,12 @@
 namespace penumbra {
 
 std::optional<VisibleSurface> first_visible_surface(Ray& ray, const RenderContext& ctx, Rng& rng,
-                                                    bool camera) {
+                                                    bool camera,
+                                                    const std::optional<Hit>* first_hit) {
     // As the path integrator does: a bounded number of see-through layers.
     for (int layer = 0; layer <= 256; ++layer) {
-        const std::optional<Hit> hit = ctx.accel.intersect(ray);
+        const std::optional<Hit> hit =
+            layer == 0 && first_hit ? *first_hit : ctx.accel.intersect(ray);
         if (!hit) return std::nullopt;
         const SurfacePoint sp = make_surface_point(ctx.scene, ray, *hit);
         if (camera && ctx.camera_culling && camera_culls(ctx.scene, sp, ray.d)) {
@@ -29,11 +31,12 @@ std::optional<VisibleSurface> first_visible_surface(Ray& ray, const RenderContex
     return std::nullopt;
 }
 
-AovRecord first_hit_aovs(const Ray& camera_ray, const RenderContext& ctx, uint64_t key) {
+AovRecord first_hit_aovs(const Ray& camera_ray, const RenderContext& ctx, uint64_t key,
+                         const std::optional<Hit>* first_hit) {
     AovRecord rec;
     Ray ray = camera_ray;
     Rng rng(key);
-    const std::optional<VisibleSurface> s = first_visible_surface(ray, ctx, rng);
+    const std::optional<VisibleSurface> s = first_visible_surface(ray, ctx, rng, true, first_hit);
     if (!s) return rec;
     rec.hit = true;
     rec.albedo = s->sd.base_color;

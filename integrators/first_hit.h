@@ -24,13 +24,17 @@ struct VisibleSurface {
 // Alpha-masked and blended surfaces are passed through stochastically, as the
 // integrators do, with numbers from rng; `ray` is left as the segment that hit. With
 // `camera` (a camera ray before its first bounce; false for a bounced ray), the backs of
-// single-sided surfaces are passed through too (camera_culling.h).
+// single-sided surfaces are passed through too (camera_culling.h). first_hit: the ray's
+// closest hit where it was traced already (a camera packet's), else nullptr.
 std::optional<VisibleSurface> first_visible_surface(Ray& ray, const RenderContext& ctx, Rng& rng,
-                                                    bool camera = true);
+                                                    bool camera = true,
+                                                    const std::optional<Hit>* first_hit = nullptr);
 
 // The first-hit AOVs of ray (a camera ray). The random numbers are hashed from `key`
 // (seed, pixel, sample) rather than drawn from the sampler, so the beauty's sample
 // streams are the same with and without AOVs.
-AovRecord first_hit_aovs(const Ray& ray, const RenderContext& ctx, uint64_t key);
+// first_hit: as first_visible_surface's.
+AovRecord first_hit_aovs(const Ray& ray, const RenderContext& ctx, uint64_t key,
+                         const std::optional<Hit>* first_hit = nullptr);
 
 }  // namespace penumbra

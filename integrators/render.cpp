@@ -128,8 +128,8 @@ inline void add_sample(const Pass& pass, int x, int y, uint32_t s, const Ray& ra
                        const std::optional<Hit>* hit = nullptr) {
     if constexpr (kAovs) {
         const uint64_t key = hash_values(pass.options.seed, x, y, s);
-        AovRecord aov = pass.first_hit ? first_hit_aovs(ray, pass.ctx, key) : AovRecord{};
-        if (pass.guides) aov.guide = denoise_guide(ray, pass.ctx, key);
+        AovRecord aov = pass.first_hit ? first_hit_aovs(ray, pass.ctx, key, hit) : AovRecord{};
+        if (pass.guides) aov.guide = denoise_guide(ray, pass.ctx, key, hit);
         if (pass.coverage) aov.coverage = camera_coverage(ray, pass.ctx, hit);
         aov.offset2 = fs.offset.x * fs.offset.x + fs.offset.y * fs.offset.y;
         aov.odd = (s & 1) != 0;
