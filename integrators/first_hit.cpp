@@ -1,7 +1,6 @@
 #include "integrators/first_hit.h"
 
 #include "core/camera/camera_culling.h"
-#include "core/film/cryptomatte.h"
 
 namespace penumbra {
 
@@ -32,21 +31,32 @@ std::optional<VisibleSurface> first_visible_surface(Ray& ray, const RenderContex
 }
 
 AovRecord first_hit_aovs(const Ray& camera_ray, const RenderContext& ctx, uint64_t key,
-                         const std::optional<Hit>* first_hit) {
+                         const std::optional<Hit>* first_hit, const FirstVertex* known,
+                         const CryptomatteHashes* hashes) {
+    FirstVertex v;
+    if (first_hit && !*first_hit) return {};  // the packet's ray missed
+    if (known && known->valid) {
+        v = *known;
+    } else {
+        Ray ray = camera_ray;
+        Rng rng(key);
+        const std::optional<VisibleSurface> s =
+            first_visible_surface(ray, ctx, rng, true, first_hit);
+        if (!s) return {};
+        v = {true, s->sp.p, s->sp.instance, s->sp.material, s->sd.base_color, s->sd.frame.n};
+    }
     AovRecord rec;
-    Ray ray = camera_ray;
-    Rng rng(key);
-    const std::optional<VisibleSurface> s = first_visible_surface(ray, ctx, rng, true, first_hit);
-    if (!s) return rec;
     rec.hit = true;
-    rec.albedo = s->sd.base_color;
-    rec.normal = s->sd.frame.n;
-    rec.position = s->sp.p;
-    rec.depth = length(s->sp.p - camera_ray.o);
-    rec.object = ctx.scene.instances[s->sp.instance].node;
-    rec.material = s->sp.material >= 0 ? s->sp.material : kDefaultMaterialId;
-    rec.object_hash = cryptomatte_hash(cryptomatte_object_name(ctx.scene, s->sp.instance));
-    rec.material_hash = cryptomatte_hash(cryptomatte_material_name(ctx.scene, s->sp.material));
+    rec.albedo = v.albedo;
+    rec.normal = v.normal;
+    rec.position = v.p;
+    rec.depth = length(v.p - camera_ray.o);
+    rec.object = ctx.scene.instances[v.instance].node;
+    rec.material = v.material >= 0 ? v.material : kDefaultMaterialId;
+    if (hashes) {
+        rec.object_hash = hashes->object(v.instance);
+        rec.material_hash = hashes->material(v.material);
+    }
     return rec;
 }
 

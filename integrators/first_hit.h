@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "core/film/aov.h"
+#include "core/film/cryptomatte.h"
 #include "core/sampling/rng.h"
 #include "core/surface_point.h"
 #include "integrators/integrator.h"
@@ -33,8 +34,12 @@ std::optional<VisibleSurface> first_visible_surface(Ray& ray, const RenderContex
 // The first-hit AOVs of ray (a camera ray). The random numbers are hashed from `key`
 // (seed, pixel, sample) rather than drawn from the sampler, so the beauty's sample
 // streams are the same with and without AOVs.
-// first_hit: as first_visible_surface's.
+// first_hit: as first_visible_surface's. known: the integrator's first vertex (taken
+// where valid, without tracing or shading again). hashes: where given, the Cryptomatte
+// hashes are filled in (the film reads them only for its Cryptomatte layers).
 AovRecord first_hit_aovs(const Ray& ray, const RenderContext& ctx, uint64_t key,
-                         const std::optional<Hit>* first_hit = nullptr);
+                         const std::optional<Hit>* first_hit = nullptr,
+                         const FirstVertex* known = nullptr,
+                         const CryptomatteHashes* hashes = nullptr);
 
 }  // namespace penumbra

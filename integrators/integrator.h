@@ -91,6 +91,19 @@ struct IntegratorOptions {
     bool transparent_background = false;
 };
 
+// A camera ray's first visible surface as an integrator's first path vertex shaded it:
+// what the first-hit AOVs read (first_hit.h), which otherwise find and shade that surface
+// a second time. Filled only where it is the surface first_visible_surface returns: no
+// stochastic alpha pass-through before it, and fully opaque.
+struct FirstVertex {
+    bool valid = false;
+    Vec3 p;
+    uint32_t instance = 0;
+    int material = -1;
+    Spectrum albedo;  // ShadingData::base_color
+    Vec3 normal;      // the shading normal
+};
+
 class Integrator {
 public:
     virtual ~Integrator() = default;
@@ -99,9 +112,13 @@ public:
     // The same for a camera ray whose closest hit the caller has traced already (empty: a
     // miss), as the render loop does for packets of camera rays; the result must equal
     // Li(ray, ...) for that hit. The default ignores the hit and traces again.
+    // first: where given, filled with the first vertex where the integrator records it
+    // (FirstVertex); left invalid otherwise.
     virtual Spectrum Li_from_hit(const Ray& ray, const std::optional<Hit>& hit,
-                                 const RenderContext& ctx, Sampler& sampler) const {
+                                 const RenderContext& ctx, Sampler& sampler,
+                                 FirstVertex* first = nullptr) const {
         (void)hit;
+        (void)first;
         return Li(ray, ctx, sampler);
     }
     // Whether Li_from_hit uses the hit (only then does the loop trace camera packets).

@@ -214,29 +214,42 @@ template <bool kMedia>
     return true;
 }
 
+// What the first-hit AOVs read of the first vertex (FirstVertex).
+inline void record_first_vertex(const SurfacePoint& sp, const ShadingData& sd, FirstVertex& first) {
+    first.valid = true;
+    first.p = sp.p;
+    first.instance = sp.instance;
+    first.material = sp.material;
+    first.albedo = sd.base_color;
+    first.normal = sd.frame.n;
+}
+
 }  // namespace
 
 Spectrum PathIntegrator::Li(const Ray& ray, const RenderContext& ctx, Sampler& sampler) const {
-    return dispatch(ray, nullptr, ctx, sampler);
+    return dispatch(ray, nullptr, ctx, sampler, nullptr);
 }
 
 Spectrum PathIntegrator::Li_from_hit(const Ray& ray, const std::optional<Hit>& hit,
-                                     const RenderContext& ctx, Sampler& sampler) const {
-    return dispatch(ray, &hit, ctx, sampler);
+                                     const RenderContext& ctx, Sampler& sampler,
+                                     FirstVertex* first) const {
+    return dispatch(ray, &hit, ctx, sampler, first);
 }
 
 Spectrum PathIntegrator::dispatch(const Ray& ray, const std::optional<Hit>* first_hit,
-                                  const RenderContext& ctx, Sampler& sampler) const {
+                                  const RenderContext& ctx, Sampler& sampler,
+                                  FirstVertex* first) const {
     if (ctx.has_volumes)
-        return ctx.has_alpha ? trace<true, true>(ray, first_hit, ctx, sampler)
-                             : trace<true, false>(ray, first_hit, ctx, sampler);
-    return ctx.has_alpha ? trace<false, true>(ray, first_hit, ctx, sampler)
-                         : trace<false, false>(ray, first_hit, ctx, sampler);
+        return ctx.has_alpha ? trace<true, true>(ray, first_hit, ctx, sampler, first)
+                             : trace<true, false>(ray, first_hit, ctx, sampler, first);
+    return ctx.has_alpha ? trace<false, true>(ray, first_hit, ctx, sampler, first)
+                         : trace<false, false>(ray, first_hit, ctx, sampler, first);
 }
 
 template <bool kMedia, bool kAlpha>
 Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* first_hit,
-                               const RenderContext& ctx, Sampler& sampler) const {
+                               const RenderContext& ctx, Sampler& sampler,
+                               FirstVertex* first) const {
     const IntegratorOptions& o = m_options;
     PathState path;
     Ray ray = camera_ray;
@@ -248,6 +261,9 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
     VertexDraws early;
     // A culled surface is no vertex: the camera ray goes on with the draws already taken.
     bool keep_draws = false;
+    // The camera ray passed a surface by a coin flip (alpha): the first-hit AOVs flip
+    // their own coins, so this path's first vertex need not be their surface.
+    bool flipped = false;
     for (;;) {
         if (kEarlyDraws && !keep_draws) take_vertex_draws(draws, o, path.depth, early);
         keep_draws = false;
@@ -279,10 +295,14 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
         const ShadingData sd =
             shade_vertex<kMedia>(ctx, sp, wo_world, materials, media, sampler, path);
 
+        if (first && path.depth == 0 && !flipped && sd.opacity >= 1)
+            record_first_vertex(sp, sd, *first);
+
         // Without MASK or BLEND materials every coverage is 1 and nothing passes.
         Coverage cover;
         if (kAlpha) {
             cover = partial_coverage(sd, sampler);
+            flipped |= path.depth == 0 && sd.opacity > 0 && sd.opacity < 1;
             if (cover.through && !(cover.share > 0)) {  // a hole: nothing to shade
                 step_through(sp, sd, ray);
                 if (++path.passes > 256) break;  // a stack of holes ends the path

@@ -14,7 +14,7 @@ public:
     explicit PathIntegrator(const IntegratorOptions& options) : m_options(options) {}
     Spectrum Li(const Ray& ray, const RenderContext& ctx, Sampler& sampler) const override;
     Spectrum Li_from_hit(const Ray& ray, const std::optional<Hit>& hit, const RenderContext& ctx,
-                         Sampler& sampler) const override;
+                         Sampler& sampler, FirstVertex* first = nullptr) const override;
     bool uses_first_hit() const override { return true; }
     // Under MIS every vertex that samples a light also samples its BSDF, and the ray of
     // that sample finds the environment's light with the MIS weight.
@@ -24,13 +24,13 @@ public:
 
 private:
     // The path loop; first_hit: the camera ray's closest hit when traced already (nullptr:
-    // trace it). Instantiated per scene kind, so that a scene without volumes or alpha
+    // trace it); first: where given, filled with the first vertex (FirstVertex). Instantiated per scene kind, so that a scene without volumes or alpha
     // does none of their work per bounce (decided once per call, from RenderContext).
     template <bool kMedia, bool kAlpha>
     Spectrum trace(const Ray& ray, const std::optional<Hit>* first_hit, const RenderContext& ctx,
-                   Sampler& sampler) const;
+                   Sampler& sampler, FirstVertex* first) const;
     Spectrum dispatch(const Ray& ray, const std::optional<Hit>* first_hit,
-                      const RenderContext& ctx, Sampler& sampler) const;
+                      const RenderContext& ctx, Sampler& sampler, FirstVertex* first) const;
     IntegratorOptions m_options;
 };
 

@@ -74,6 +74,8 @@ struct Pass {
     const std::unique_ptr<Sampler>* prototypes;
     bool halves, first_hit, guides, packets;
     bool coverage;  // a transparent background: the film's alpha (camera_coverage.h)
+    // The scene's Cryptomatte hashes where the film has a Cryptomatte layer, else null.
+    const CryptomatteHashes* hashes;
     uint32_t first, last;
     const std::vector<uint8_t>* active;
     TileGrid grid;
@@ -121,14 +123,22 @@ inline void camera_ray(const Pass& pass, int x, int y, uint32_t s, Sampler& samp
 
 // A sample's radiance to the film, with its AOVs where the film has any (kAovs: a
 // separate instantiation, so that a render without them does no AOV work per sample).
-// hit: the camera ray's closest hit where the packet traced it (nullptr: not traced).
+// hit: the camera ray's closest hit where the packet traced it (nullptr: not traced);
+// first: the integrator's first vertex, where it recorded one.
 template <bool kAovs>
 inline void add_sample(const Pass& pass, int x, int y, uint32_t s, const Ray& ray,
                        const Spectrum& L, const FilterSample& fs,
-                       const std::optional<Hit>* hit = nullptr) {
+                       const std::optional<Hit>* hit = nullptr,
+                       const FirstVertex* first = nullptr) {
     if constexpr (kAovs) {
-        const uint64_t key = hash_values(pass.options.seed, x, y, s);
-        AovRecord aov = pass.first_hit ? first_hit_aovs(ray, pass.ctx, key, hit) : AovRecord{};
+        // The key seeds the AOVs' own coin flips: hashed only where something draws them
+        // (the guides, or first-hit AOVs the integrator's first vertex does not give).
+        const bool drawn = pass.guides || (pass.first_hit && !(first && first->valid) &&
+                                           !(hit && !*hit));
+        const uint64_t key = drawn ? hash_values(pass.options.seed, x, y, s) : 0;
+        AovRecord aov = pass.first_hit
+                            ? first_hit_aovs(ray, pass.ctx, key, hit, first, pass.hashes)
+                            : AovRecord{};
         if (pass.guides) aov.guide = denoise_guide(ray, pass.ctx, key, hit);
         if (pass.coverage) aov.coverage = camera_coverage(ray, pass.ctx, hit);
         aov.offset2 = fs.offset.x * fs.offset.x + fs.offset.y * fs.offset.y;
@@ -150,11 +160,14 @@ inline void render_packets(const Pass& pass, TileSamplers& samplers, const int x
             camera_ray(pass, xs[i], ys[i], s, samplers.for_sample(i, s), fs[i], &rays[i]);
         std::optional<Hit> hits[kLanes];
         pass.ctx.accel.intersect8(rays, hits);
-        for (int i = 0; i < kLanes; ++i)
-            add_sample<kAovs>(
-                pass, xs[i], ys[i], s, rays[i],
-                pass.integrator.Li_from_hit(rays[i], hits[i], pass.ctx, samplers.for_sample(i, s)),
-                fs[i], &hits[i]);
+        for (int i = 0; i < kLanes; ++i) {
+            // With first-hit AOVs, the integrator hands over its first vertex's shading.
+            FirstVertex first;
+            FirstVertex* wanted = kAovs && pass.first_hit ? &first : nullptr;
+            const Spectrum L = pass.integrator.Li_from_hit(rays[i], hits[i], pass.ctx,
+                                                           samplers.for_sample(i, s), wanted);
+            add_sample<kAovs>(pass, xs[i], ys[i], s, rays[i], L, fs[i], &hits[i], wanted);
+        }
     }
 }
 
@@ -226,6 +239,9 @@ bool render_samples(const RenderContext& ctx, const Camera& camera, const Integr
     const int threads =
         options.threads > 0 ? options.threads : tbb::this_task_arena::max_concurrency();
     std::atomic<bool> abandoned{false};
+    const bool crypto = film.aovs().has(Aov::CryptoObject) || film.aovs().has(Aov::CryptoMaterial);
+    const std::optional<CryptomatteHashes> hashes =
+        crypto ? std::optional<CryptomatteHashes>(ctx.scene) : std::nullopt;
     const Pass pass{ctx,
                     camera,
                     integrator,
@@ -238,6 +254,7 @@ bool render_samples(const RenderContext& ctx, const Camera& camera, const Integr
                     film.aovs().has(Aov::Denoise),
                     integrator.uses_first_hit(),
                     film.aovs().has(Aov::Coverage),
+                    hashes ? &*hashes : nullptr,
                     first,
                     last,
                     active,

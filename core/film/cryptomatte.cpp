@@ -127,6 +127,13 @@ std::vector<std::string> cryptomatte_material_names(const Scene& scene) {
     return names;
 }
 
+CryptomatteHashes::CryptomatteHashes(const Scene& scene) {
+    for (const std::string& name : cryptomatte_object_names(scene))
+        objects.push_back(cryptomatte_hash(name));
+    for (const std::string& name : cryptomatte_material_names(scene))
+        materials.push_back(cryptomatte_hash(name));
+}
+
 std::array<std::pair<float, float>, kCryptomatteRanks> CryptomatteSlots::ranked(
     double total) const {
     std::array<int, kCryptomatteSlots> order;

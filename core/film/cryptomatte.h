@@ -36,6 +36,15 @@ const std::string& cryptomatte_material_name(const Scene& scene, int material);
 std::vector<std::string> cryptomatte_object_names(const Scene& scene);
 std::vector<std::string> cryptomatte_material_names(const Scene& scene);
 
+// Every instance's and material's hash, computed once per render rather than per sample:
+// objects[instance], materials[material], and the default material's last.
+struct CryptomatteHashes {
+    std::vector<uint32_t> objects, materials;
+    explicit CryptomatteHashes(const Scene& scene);
+    uint32_t object(uint32_t instance) const { return objects[instance]; }
+    uint32_t material(int m) const { return m >= 0 ? materials[size_t(m)] : materials.back(); }
+};
+
 // The layers' type names (Blender's): Typename00, 01, 02 hold the ranks.
 inline constexpr const char* kCryptoObjectLayer = "CryptoObject";
 inline constexpr const char* kCryptoMaterialLayer = "CryptoMaterial";
