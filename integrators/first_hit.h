@@ -1,7 +1,8 @@
 // What a camera ray sees first: the first surface it does not pass through (shared by
 // the first-hit AOVs and the denoiser's guides), and the first-hit AOVs (albedo, shading
-// normal, distance, position), found with their own ray casts only when asked for, so
-// integrators stay unaware of them.
+// normal, distance, position, IDs), computed only when asked for. They take the path
+// integrator's first vertex where it is that surface (FirstVertex); otherwise, and for
+// other integrators, they find and shade it with their own ray casts.
 #pragma once
 
 #include <cstdint>

@@ -140,7 +140,9 @@ inline void add_sample(const Pass& pass, int x, int y, uint32_t s, const Ray& ra
                             ? first_hit_aovs(ray, pass.ctx, key, hit, first, pass.hashes)
                             : AovRecord{};
         if (pass.guides) aov.guide = denoise_guide(ray, pass.ctx, key, hit);
-        if (pass.coverage) aov.coverage = camera_coverage(ray, pass.ctx, hit);
+        // An opaque first vertex with no coin-flipped surface before it covers fully.
+        if (pass.coverage)
+            aov.coverage = first && first->valid ? 1 : camera_coverage(ray, pass.ctx, hit);
         aov.offset2 = fs.offset.x * fs.offset.x + fs.offset.y * fs.offset.y;
         aov.odd = (s & 1) != 0;
         pass.film.add_sample(x, y, L, fs.weight, aov);
@@ -161,9 +163,9 @@ inline void render_packets(const Pass& pass, TileSamplers& samplers, const int x
         std::optional<Hit> hits[kLanes];
         pass.ctx.accel.intersect8(rays, hits);
         for (int i = 0; i < kLanes; ++i) {
-            // With first-hit AOVs, the integrator hands over its first vertex's shading.
+            // With first-hit AOVs or coverage, the integrator hands over its first vertex.
             FirstVertex first;
-            FirstVertex* wanted = kAovs && pass.first_hit ? &first : nullptr;
+            FirstVertex* wanted = kAovs && (pass.first_hit || pass.coverage) ? &first : nullptr;
             const Spectrum L = pass.integrator.Li_from_hit(rays[i], hits[i], pass.ctx,
                                                            samplers.for_sample(i, s), wanted);
             add_sample<kAovs>(pass, xs[i], ys[i], s, rays[i], L, fs[i], &hits[i], wanted);
