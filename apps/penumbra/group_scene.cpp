@@ -4,18 +4,30 @@
 
 namespace penumbra {
 
+void end_group(GroupScene& g, bool source_done) {
+    if (g.asset) recycle_setup(std::move(g.setup), *g.asset);
+    g.setup.reset();
+    if (source_done) g.asset.reset();
+}
+
 SceneSetup& group_setup(const BatchJob& job, GroupScene& g) {
-    if (g.group != job.group) {
-        g.setup.reset();  // the previous group's scene goes before the next one loads
+    if (g.group != job.group || g.source != job.source) {
+        // The previous group's scene goes before the next one is posed or loaded.
+        end_group(g, g.source != job.source);
+        if (g.source != job.source) {
+            g.source = job.source;
+            g.source_error.clear();
+        }
         g.error.clear();
         g.group = job.group;
     }
+    if (!g.source_error.empty()) throw SceneError(g.source_error);
     if (!g.error.empty()) throw SceneError(g.error);
     if (!g.setup) {
         try {
-            g.setup = setup_scene(job.options, job.scene);
+            g.setup = setup_scene(job.options, job.scene, g.asset);
         } catch (const std::exception& e) {
-            g.error = e.what();
+            (g.asset ? g.error : g.source_error) = e.what();
             throw;
         }
         if (job.views)

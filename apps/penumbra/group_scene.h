@@ -1,6 +1,8 @@
-// The scene that consecutive images of a batch share: the views of one frame of one scene
-// (BatchJob::group) render from one load and one accelerator build; only the camera
-// changes between them.
+// The scene that consecutive images of a batch share. Every image of one source (all
+// frames and views of one scene of the command line or one job entry, BatchJob::source)
+// renders from one loaded file: parsed and its images decoded once, posed at each frame's
+// shutter. The views of one frame (BatchJob::group) also share the pose and its
+// accelerator build; only the camera changes between them.
 #pragma once
 
 #include <cstddef>
@@ -13,17 +15,26 @@
 
 namespace penumbra {
 
-// Loaded by the first image of a group that renders (finished images are skipped without
-// loading) and kept for the others. A load that failed fails the group's other images
-// with its message, without loading again.
+// Loaded by the first image of a source (and set up by the first of a group) that
+// renders: finished images are skipped without loading. A load that failed fails the
+// source's other images with its message, and a set-up that failed the group's, without
+// trying again.
 struct GroupScene {
+    size_t source = std::numeric_limits<size_t>::max();
+    std::unique_ptr<GltfAsset> asset;
+    std::string source_error;
     size_t group = std::numeric_limits<size_t>::max();
     std::unique_ptr<SceneSetup> setup;
     std::string error;
 };
 
-// The job's scene set up (loaded when the job starts a group), looking through the job's
-// view. Frees the previous group's scene before loading. Throws SceneError.
+// The job's scene set up (posed when the job starts a group, loaded when it starts a
+// source), looking through the job's view. Ends the previous group and source first.
+// Throws SceneError.
 SceneSetup& group_setup(const BatchJob& job, GroupScene& g);
+
+// After the last image of a group: frees its set-up, handing the shared parts back to
+// the asset; with `source_done`, frees the loaded file too.
+void end_group(GroupScene& g, bool source_done);
 
 }  // namespace penumbra

@@ -14,6 +14,7 @@
 #include "core/scene/scene.h"
 #include "integrators/render.h"
 #include "io/color/color.h"
+#include "io/gltf/gltf_asset.h"
 
 namespace penumbra {
 
@@ -46,6 +47,14 @@ struct SceneSetup {
 // Loads and prepares path as the options say. Throws SceneError for bad input. The
 // result refers to itself, hence the pointer.
 std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std::string& path);
+// The same, posing `asset` at the options' shutter: the file as loaded for earlier images
+// whose options differ from o in their timing only, or null, and then loaded here (with
+// o's load and colour options) and kept there for the next images.
+std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std::string& path,
+                                        std::unique_ptr<GltfAsset>& asset);
+// Frees a setup made from `asset`, handing back to it what the next pose shares (meshes,
+// materials, decoded images).
+void recycle_setup(std::unique_ptr<SceneSetup> setup, GltfAsset& asset);
 
 // Renders the next image through view `index` of setup.views: its lens overrides
 // applied and its camera built; the scene, lights and accelerator stay as they are.
