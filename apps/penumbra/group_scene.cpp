@@ -5,9 +5,12 @@
 namespace penumbra {
 
 void end_group(GroupScene& g, bool source_done) {
-    if (g.asset) recycle_setup(std::move(g.setup), *g.asset);
-    g.setup.reset();
-    if (source_done) g.asset.reset();
+    g.loaded.recycle(std::move(g.setup));
+    if (source_done) {
+        // Destroyed here, its accelerator before the file whose meshes that reads.
+        SceneSource done = std::move(g.loaded);
+        g.loaded = SceneSource();
+    }
 }
 
 SceneSetup& group_setup(const BatchJob& job, GroupScene& g) {
@@ -25,9 +28,9 @@ SceneSetup& group_setup(const BatchJob& job, GroupScene& g) {
     if (!g.error.empty()) throw SceneError(g.error);
     if (!g.setup) {
         try {
-            g.setup = setup_scene(job.options, job.scene, g.asset);
+            g.setup = setup_scene(job.options, job.scene, g.loaded);
         } catch (const std::exception& e) {
-            (g.asset ? g.error : g.source_error) = e.what();
+            (g.loaded.asset ? g.error : g.source_error) = e.what();
             throw;
         }
         if (job.views)

@@ -21,7 +21,7 @@ namespace penumbra {
 // trying again.
 struct GroupScene {
     size_t source = std::numeric_limits<size_t>::max();
-    std::unique_ptr<GltfAsset> asset;
+    SceneSource loaded;  // the source's file and its last frame's accelerator
     std::string source_error;
     size_t group = std::numeric_limits<size_t>::max();
     std::unique_ptr<SceneSetup> setup;
@@ -33,8 +33,8 @@ struct GroupScene {
 // Throws SceneError.
 SceneSetup& group_setup(const BatchJob& job, GroupScene& g);
 
-// After the last image of a group: frees its set-up, handing the shared parts back to
-// the asset; with `source_done`, frees the loaded file too.
+// After the last image of a group: frees its set-up, handing what the next frame may share
+// back to the source; with `source_done`, frees the loaded file too.
 void end_group(GroupScene& g, bool source_done);
 
 }  // namespace penumbra

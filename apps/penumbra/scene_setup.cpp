@@ -97,10 +97,10 @@ double since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-// Poses the file (loaded into `asset` first when it is null) at the options' shutter into
+// Poses the source's file (loaded first when it is not yet) at the options' shutter into
 // s.scene, and reports what its textures cost.
-GltfLoadStats load_scene(const RenderCommandOptions& o, std::unique_ptr<GltfAsset>& asset,
-                         SceneSetup& s) {
+GltfLoadStats load_scene(const RenderCommandOptions& o, SceneSource& source, SceneSetup& s) {
+    std::unique_ptr<GltfAsset>& asset = source.asset;
     const std::string& path = s.path;
     const auto t0 = Clock::now();
     ShutterInterval shutter;
@@ -198,13 +198,18 @@ LightingSetup setup_lights(const RenderCommandOptions& o, SceneSetup& s) {
     return result;
 }
 
-// Builds the accelerator and reports where load and build time and memory go, for big
-// scenes (docs/performance.md).
-void build_accel(const RenderCommandOptions& o, const GltfLoadStats& ls, SceneSetup& s) {
+// Builds the accelerator, or takes the source's last one where nothing moved, and reports
+// where load and build time and memory go, for big scenes (docs/performance.md).
+void build_accel(const RenderCommandOptions& o, const GltfLoadStats& ls, SceneSource& source,
+                 SceneSetup& s) {
     const Scene& scene = s.scene;
     const auto t0 = Clock::now();
     const std::clock_t build_cpu = std::clock();
-    s.accel = make_accel(o.accel, scene);
+    s.accel = source.reuse_accel(scene);
+    if (s.accel)
+        LOG_INFO(s.path << ": the previous frame's accelerator kept: nothing moved");
+    else
+        s.accel = make_accel(o.accel, scene);
     s.build_seconds = since(t0);
     const AccelStats as = s.accel->stats();
     char line[400];
@@ -220,8 +225,7 @@ void build_accel(const RenderCommandOptions& o, const GltfLoadStats& ls, SceneSe
                   as.name.c_str(), format_bytes(as.memory_bytes).c_str(),
                   format_bytes(peak_memory_bytes()).c_str());
     // A frame after the first of a file only poses it: no parse, no image decoding.
-    LOG_INFO(s.path << (ls.parsed ? ": load and build: " : ": pose and build: ")
-                    << line);
+    LOG_INFO(s.path << (ls.parsed ? ": load and build: " : ": pose and build: ") << line);
 }
 
 }  // namespace
@@ -231,20 +235,20 @@ RenderContext SceneSetup::context() const {
 }
 
 std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std::string& path) {
-    std::unique_ptr<GltfAsset> asset;
-    return setup_scene(o, path, asset);
+    SceneSource source;
+    return setup_scene(o, path, source);
 }
 
 std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std::string& path,
-                                        std::unique_ptr<GltfAsset>& asset) {
+                                        SceneSource& source) {
     auto s = std::make_unique<SceneSetup>();
     s->path = path;
     s->color = std::make_unique<ColorPipeline>(o.color);
-    const GltfLoadStats load_stats = load_scene(o, asset, *s);
+    const GltfLoadStats load_stats = load_scene(o, source, *s);
     choose_camera_and_size(o, *s);
     s->integrator = make_integrator(o.integrator, o.path);
     const LightingSetup lighting = setup_lights(o, *s);
-    build_accel(o, load_stats, *s);
+    build_accel(o, load_stats, source, *s);
 
     apply_lens_options(o.lens, path, s->width, s->height, s->scene, *s->accel, s->camera_desc);
 
@@ -257,17 +261,6 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
         !s->lights->environment())
         add_default_lights_if_view_dark(*s, o, lighting.options);
     return s;
-}
-
-void recycle_setup(std::unique_ptr<SceneSetup> setup, GltfAsset& asset) {
-    if (!setup) return;
-    // What refers to the scene goes first.
-    setup->camera.reset();
-    setup->accel.reset();
-    setup->lights.reset();
-    Scene scene = std::move(setup->scene);
-    setup.reset();
-    asset.recycle(std::move(scene));
 }
 
 void use_view(SceneSetup& s, size_t index, const RenderCommandOptions& o) {

@@ -34,6 +34,12 @@ public:
     // keeps the parts that every pose shares for the next scene_at; drops the rest.
     void recycle(Scene&& scene);
 
+    // Whether recycling `scene` keeps every mesh array it has where it is: nothing in it
+    // deforms and its meshes are the shared ones, kept between poses (no material is
+    // animated). An accelerator built over it then serves the next pose with the same
+    // instances (Accel::rebind), as long as static_builds() stays the same.
+    bool keeps_geometry(const Scene& scene) const;
+
     const std::string& path() const;
     // How often the file was parsed (1 while its scenes are recycled) and the shared
     // parts built (meshes read, images decoded): for tests and logs.

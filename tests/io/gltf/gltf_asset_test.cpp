@@ -1,6 +1,7 @@
 // A file loaded once and posed at several shutters: each pose is the scene that loading the
 // file at that shutter gives, bit for bit, while the file is parsed and its images decoded
-// once; a file whose materials are animated reads its materials again at each pose.
+// once; a file whose materials are animated reads its materials again at each pose. Which
+// poses keep their mesh arrays in place for an accelerator to serve the next pose.
 #include "io/gltf/gltf_asset.h"
 
 #include <gtest/gtest.h>
@@ -115,6 +116,25 @@ TEST(GltfAsset, AnimatedMaterialsAreReadAtEveryPose) {
     expect_poses_match_loads(path, asset, true);
     EXPECT_EQ(asset.parses(), 1u);
     EXPECT_EQ(asset.static_builds(), 3u);
+}
+
+// The shared meshes stay where they are from pose to pose, unless something deforms (its
+// meshes are the pose's own) or the materials are read again (and the meshes with them).
+TEST(GltfAsset, KeepsGeometryOnlyWhereNothingDeformsAndTheSharedPartsStay) {
+    GltfAsset rigid(kBoxAnimated, {});
+    Scene a = rigid.scene_at(0.1, 0.1);
+    EXPECT_TRUE(rigid.keeps_geometry(a));
+    const Vec3* first = a.meshes.at(0).positions.data();
+    rigid.recycle(std::move(a));
+    const Scene b = rigid.scene_at(0.2, 0.2);
+    EXPECT_EQ(b.meshes.at(0).positions.data(), first);
+
+    GltfAsset skinned(kFox, {});
+    EXPECT_FALSE(skinned.keeps_geometry(skinned.scene_at(0.1, 0.1)));
+
+    const test::ScratchDir dir;
+    GltfAsset animated(test::animated_scene(dir), {});
+    EXPECT_FALSE(animated.keeps_geometry(animated.scene_at(0.1, 0.1)));
 }
 
 }  // namespace
