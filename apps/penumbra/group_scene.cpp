@@ -13,6 +13,12 @@ void end_group(GroupScene& g, bool source_done) {
     }
 }
 
+bool more_frames(const std::vector<BatchJob>& jobs, size_t i) {
+    for (size_t j = i + 1; j < jobs.size() && jobs[j].source == jobs[i].source; ++j)
+        if (jobs[j].group != jobs[i].group) return true;
+    return false;
+}
+
 SceneSetup& group_setup(const BatchJob& job, GroupScene& g) {
     if (g.group != job.group || g.source != job.source) {
         // The previous group's scene goes before the next one is posed or loaded.
@@ -28,6 +34,7 @@ SceneSetup& group_setup(const BatchJob& job, GroupScene& g) {
     if (!g.error.empty()) throw SceneError(g.error);
     if (!g.setup) {
         try {
+            g.loaded.more_frames = g.more_frames;
             g.setup = setup_scene(job.options, job.scene, g.loaded);
         } catch (const std::exception& e) {
             (g.loaded.asset ? g.error : g.source_error) = e.what();

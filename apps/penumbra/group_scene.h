@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "apps/penumbra/batch.h"
 #include "apps/penumbra/scene_setup.h"
@@ -23,6 +24,7 @@ struct GroupScene {
     size_t source = std::numeric_limits<size_t>::max();
     SceneSource loaded;  // the source's file and its last frame's accelerator
     std::string source_error;
+    bool more_frames = false;  // the next job's: see more_frames()
     size_t group = std::numeric_limits<size_t>::max();
     std::unique_ptr<SceneSetup> setup;
     std::string error;
@@ -32,6 +34,10 @@ struct GroupScene {
 // source), looking through the job's view. Ends the previous group and source first.
 // Throws SceneError.
 SceneSetup& group_setup(const BatchJob& job, GroupScene& g);
+
+// Whether a later group of jobs[i]'s source follows it in the batch: its file is then kept
+// for that group's frame (SceneSource::more_frames).
+bool more_frames(const std::vector<BatchJob>& jobs, size_t i);
 
 // After the last image of a group: frees its set-up, handing what the next frame may share
 // back to the source; with `source_done`, frees the loaded file too.

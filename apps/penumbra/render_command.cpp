@@ -363,6 +363,7 @@ int run_render_jobs(const std::vector<BatchJob>& jobs, const RenderCommandOption
             r.message = "interrupted before it started";
         } else {
             try {
+                scene.more_frames = more_frames(jobs, i);
                 render_job(job, scene, state, r);
             } catch (const std::exception& e) {
                 // One bad scene does not stop the batch.

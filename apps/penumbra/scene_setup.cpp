@@ -206,6 +206,9 @@ void build_accel(const RenderCommandOptions& o, const GltfLoadStats& ls, SceneSo
     const auto t0 = Clock::now();
     const std::clock_t build_cpu = std::clock();
     s.accel = source.reuse_accel(scene);
+    // Only a later frame's pose reads the parsed file again; without one it goes before the
+    // build, as after a single load.
+    if (!source.more_frames) source.asset.reset();
     if (s.accel)
         LOG_INFO(s.path << ": the previous frame's accelerator kept: nothing moved");
     else

@@ -20,6 +20,10 @@ class SceneSource {
 public:
     // The loaded file; null until the first frame loads it (setup_scene).
     std::unique_ptr<GltfAsset> asset;
+    // Whether a later frame will pose the file again. Else setup_scene frees it once the
+    // scene is posed, before the accelerator is built, as a single load does: the parsed
+    // file holds the buffers (the .bin) that only a next pose reads.
+    bool more_frames = false;
 
     // Takes back a frame's setup once its images are done: its scene's shared parts go
     // back to the asset, and its accelerator is kept where the geometry stays in place.
