@@ -26,8 +26,9 @@ import time
 import OpenImageIO as oiio
 
 STAGES = ["parse", "meshes", "materials", "nodes", "build"]
-LINE = re.compile(r"(?:load|pose) and build: parse ([\d.]+) s \(cpu [\d.]+\), meshes ([\d.]+) \([\d.]+\), "
-                  r"materials ([\d.]+) \([\d.]+\), nodes ([\d.]+) \([\d.]+\); \S+ build ([\d.]+) s")
+LINE = re.compile(r"(?:load|pose) and build: parse ([\d.]+) s \(cpu [\d.]+\), "
+                  r"meshes ([\d.]+) \([\d.]+\), materials ([\d.]+) \([\d.]+\), "
+                  r"nodes ([\d.]+) \([\d.]+\); \S+ build ([\d.]+) s")
 
 
 def run(binary, args):
