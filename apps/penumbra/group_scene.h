@@ -24,7 +24,7 @@ struct GroupScene {
     size_t source = std::numeric_limits<size_t>::max();
     SceneSource loaded;  // the source's file and its last frame's accelerator
     std::string source_error;
-    bool more_frames = false;  // the next job's: see more_frames()
+    bool more_frames = false;  // more_frames() of the job being rendered, set by the batch
     size_t group = std::numeric_limits<size_t>::max();
     std::unique_ptr<SceneSetup> setup;
     std::string error;

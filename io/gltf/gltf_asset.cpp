@@ -238,7 +238,6 @@ bool GltfAsset::keeps_geometry(const Scene& scene) const {
     return m->reusable && scene.meshes.size() == m->meshes && scene.objects.size() == m->objects;
 }
 
-const std::string& GltfAsset::path() const { return m->path; }
 size_t GltfAsset::parses() const { return m->parses; }
 size_t GltfAsset::static_builds() const { return m->static_builds; }
 

@@ -40,7 +40,6 @@ public:
     // instances (Accel::rebind), as long as static_builds() stays the same.
     bool keeps_geometry(const Scene& scene) const;
 
-    const std::string& path() const;
     // How often the file was parsed (1 while its scenes are recycled) and the shared
     // parts built (meshes read, images decoded): for tests and logs.
     size_t parses() const;
