@@ -64,6 +64,7 @@ void add_jobs(const std::string& scene, const RenderCommandOptions& o, const std
     }
     const bool framed = !frames.empty();
     if (!framed) frames.push_back(0);
+    job.source = jobs.empty() ? 0 : jobs.back().source + 1;
     for (int f : frames) {
         if (framed) job.options.timeline.frame = f;
         job.group = jobs.empty() ? 0 : jobs.back().group + 1;

@@ -26,8 +26,11 @@ struct BatchJob {
     // --views: this image's view (-1: none) among every view of its entry.
     int view = -1;
     std::shared_ptr<const ViewList> views;
-    // Consecutive jobs of one group (the views of one frame of one entry) render from one
-    // loaded scene and one accelerator; only the camera changes between them.
+    // Consecutive jobs of one source (every frame and view of one scene argument or job
+    // entry: the same file with the same options but for their timing) render from one
+    // loaded file, posed per frame; those of one group (the views of one frame) from one
+    // pose and one accelerator; only the camera changes between them.
+    size_t source = 0;
     size_t group = 0;
 };
 

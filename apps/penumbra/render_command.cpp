@@ -363,6 +363,7 @@ int run_render_jobs(const std::vector<BatchJob>& jobs, const RenderCommandOption
             r.message = "interrupted before it started";
         } else {
             try {
+                scene.more_frames = more_frames(jobs, i);
                 render_job(job, scene, state, r);
             } catch (const std::exception& e) {
                 // One bad scene does not stop the batch.
@@ -376,10 +377,11 @@ int run_render_jobs(const std::vector<BatchJob>& jobs, const RenderCommandOption
         }
         progress.job_finished(r.rays);
         results.push_back(r);
-        if (i + 1 == jobs.size() || jobs[i + 1].group != job.group) {
+        const bool last = i + 1 == jobs.size();
+        if (last || jobs[i + 1].group != job.group) {
             if (scene.setup && scene.group == job.group)
                 write_view_transforms(jobs, results, first_result, job.group, *scene.setup);
-            scene.setup.reset();
+            end_group(scene, last || jobs[i + 1].source != job.source);
         }
     }
     const auto failed = std::count_if(results.begin(), results.end(), [](const JobResult& r) {

@@ -18,7 +18,7 @@
 #include "core/log.h"
 #include "core/progress.h"
 #include "core/scene/scene_stats.h"
-#include "io/gltf/gltf_loader.h"
+#include "io/gltf/gltf_asset.h"
 #include "io/image/image_reader.h"
 #include "io/color/scene_color.h"
 #include "materials/material.h"
@@ -97,21 +97,25 @@ double since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-// Reads the file into s.scene as the options say, and reports what its textures cost.
-GltfLoadStats load_scene(const RenderCommandOptions& o, SceneSetup& s) {
+// Poses the source's file (loaded first when it is not yet) at the options' shutter into
+// s.scene, and reports what its textures cost.
+GltfLoadStats load_scene(const RenderCommandOptions& o, SceneSource& source, SceneSetup& s) {
+    std::unique_ptr<GltfAsset>& asset = source.asset;
     const std::string& path = s.path;
     const auto t0 = Clock::now();
-    GltfLoadOptions load = o.gltf;
-    load.rec709_to_working = s.color->rec709_to_working();
+    ShutterInterval shutter;
     try {
-        const ShutterInterval shutter = resolve_shutter(o.timeline);
-        load.shutter_open = shutter.open;
-        load.shutter_close = shutter.close;
+        shutter = resolve_shutter(o.timeline);
     } catch (const std::invalid_argument& e) {
         throw SceneError(path + ": " + e.what());
     }
+    if (!asset) {
+        GltfLoadOptions load = o.gltf;
+        load.rec709_to_working = s.color->rec709_to_working();
+        asset = std::make_unique<GltfAsset>(path, load);
+    }
     GltfLoadStats load_stats;
-    s.scene = load_gltf(path, load, &load_stats);
+    s.scene = asset->scene_at(shutter.open, shutter.close, &load_stats);
     s.load_seconds = since(t0);
     Scene& scene = s.scene;
     if (o.no_file_lights && !scene.lights.empty()) {
@@ -194,19 +198,27 @@ LightingSetup setup_lights(const RenderCommandOptions& o, SceneSetup& s) {
     return result;
 }
 
-// Builds the accelerator and reports where load and build time and memory go, for big
-// scenes (docs/performance.md).
-void build_accel(const RenderCommandOptions& o, const GltfLoadStats& ls, SceneSetup& s) {
+// Builds the accelerator, or takes the source's last one where nothing moved, and reports
+// where load and build time and memory go, for big scenes (docs/performance.md).
+void build_accel(const RenderCommandOptions& o, const GltfLoadStats& ls, SceneSource& source,
+                 SceneSetup& s) {
     const Scene& scene = s.scene;
     const auto t0 = Clock::now();
     const std::clock_t build_cpu = std::clock();
-    s.accel = make_accel(o.accel, scene);
+    s.accel = source.reuse_accel(scene);
+    // Only a later frame's pose reads the parsed file again; without one it goes before the
+    // build, as after a single load.
+    if (!source.more_frames) source.asset.reset();
+    if (s.accel)
+        LOG_INFO(s.path << ": the previous frame's accelerator kept: nothing moved");
+    else
+        s.accel = make_accel(o.accel, scene);
     s.build_seconds = since(t0);
     const AccelStats as = s.accel->stats();
     char line[400];
     std::snprintf(line, sizeof(line),
-                  "parse %.2f s (cpu %.2f), meshes %.2f (%.2f), materials %.2f (%.2f), nodes "
-                  "%.2f (%.2f); %s build %.2f s (cpu %.2f); %zu triangles in %s of meshes, "
+                  "parse %.3f s (cpu %.3f), meshes %.3f (%.3f), materials %.3f (%.3f), nodes "
+                  "%.3f (%.3f); %s build %.3f s (cpu %.3f); %zu triangles in %s of meshes, "
                   "%zu images, %s %s; peak memory %s",
                   ls.parse.seconds, ls.parse.cpu_seconds, ls.meshes.seconds, ls.meshes.cpu_seconds,
                   ls.materials.seconds, ls.materials.cpu_seconds, ls.nodes.seconds,
@@ -215,7 +227,8 @@ void build_accel(const RenderCommandOptions& o, const GltfLoadStats& ls, SceneSe
                   format_bytes(mesh_memory_bytes(scene)).c_str(), scene.images.size(),
                   as.name.c_str(), format_bytes(as.memory_bytes).c_str(),
                   format_bytes(peak_memory_bytes()).c_str());
-    LOG_INFO(s.path << ": load and build: " << line);
+    // A frame after the first of a file only poses it: no parse, no image decoding.
+    LOG_INFO(s.path << (ls.parsed ? ": load and build: " : ": pose and build: ") << line);
 }
 
 }  // namespace
@@ -225,14 +238,20 @@ RenderContext SceneSetup::context() const {
 }
 
 std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std::string& path) {
+    SceneSource source;
+    return setup_scene(o, path, source);
+}
+
+std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std::string& path,
+                                        SceneSource& source) {
     auto s = std::make_unique<SceneSetup>();
     s->path = path;
     s->color = std::make_unique<ColorPipeline>(o.color);
-    const GltfLoadStats load_stats = load_scene(o, *s);
+    const GltfLoadStats load_stats = load_scene(o, source, *s);
     choose_camera_and_size(o, *s);
     s->integrator = make_integrator(o.integrator, o.path);
     const LightingSetup lighting = setup_lights(o, *s);
-    build_accel(o, load_stats, *s);
+    build_accel(o, load_stats, source, *s);
 
     apply_lens_options(o.lens, path, s->width, s->height, s->scene, *s->accel, s->camera_desc);
 

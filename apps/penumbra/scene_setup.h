@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "apps/penumbra/render_command.h"
+#include "apps/penumbra/scene_source.h"
 #include "core/accel/accel.h"
 #include "core/camera/camera.h"
 #include "core/lights/light_set.h"
@@ -46,6 +47,12 @@ struct SceneSetup {
 // Loads and prepares path as the options say. Throws SceneError for bad input. The
 // result refers to itself, hence the pointer.
 std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std::string& path);
+// The same, posing the source's file at the options' shutter: the file as loaded for
+// earlier images whose options differ from o in their timing only (with their accelerator
+// where nothing moved since), or loaded here (with o's load and colour options) and kept
+// in `source` for the next images, which SceneSource::recycle hands the setup back to.
+std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std::string& path,
+                                        SceneSource& source);
 
 // Renders the next image through view `index` of setup.views: its lens overrides
 // applied and its camera built; the scene, lights and accelerator stay as they are.

@@ -78,6 +78,10 @@ public:
         for (int i = 0; i < 8; ++i) hits[i] = intersect(rays[i]);
     }
     virtual AccelStats stats() const = 0;
+    // Points the accelerator at `scene`, a Scene object whose geometry is the one it was
+    // built for: the same mesh arrays (the very memory), objects and instances, as a file
+    // posed again at a time where nothing moved has. The default keeps no reference.
+    virtual void rebind(const Scene& scene) { (void)scene; }
     // Rays traced so far, summed over threads.
     uint64_t rays_traced() const;
 

@@ -346,6 +346,8 @@ EmbreeAccel::EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options)
 
 EmbreeAccel::~EmbreeAccel() = default;
 
+void EmbreeAccel::rebind(const Scene& scene) { m_impl->hits.rebind(scene); }
+
 namespace {
 
 void fill_ray(const Ray& ray, RTCRay& r) {

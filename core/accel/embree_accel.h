@@ -40,6 +40,7 @@ public:
     explicit EmbreeAccel(const Scene& scene, const EmbreeBuildOptions& options = {});
     ~EmbreeAccel() override;
     AccelStats stats() const override { return m_stats; }
+    void rebind(const Scene& scene) override;
     // Vertex bytes copied out of the Scene: positions without a spare element of
     // capacity, and the world-space copies of flattened objects (0 when Embree reads
     // every array in place).

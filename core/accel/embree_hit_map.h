@@ -23,6 +23,11 @@ public:
     // The scene must outlive the map. Top-level geomIDs below instance count are
     // instances; flattened meshes follow (add_flat_mesh).
     explicit EmbreeHitMap(const Scene& scene);
+    // The same geometry in another Scene object (Accel::rebind).
+    void rebind(const Scene& scene) {
+        m_scene = &scene;
+        m_refiner.rebind(scene);
+    }
 
     // geomID geom_id of object `object`'s Embree scene is Scene mesh `mesh`; keep_planes:
     // precompute its triangles' planes (HitRefiner::keep_planes).

@@ -20,6 +20,8 @@ public:
     HitRefiner() = default;
     // The scene must outlive the refiner.
     explicit HitRefiner(const Scene& scene);
+    // The same geometry in another Scene object (Accel::rebind).
+    void rebind(const Scene& scene) { m_scene = &scene; }
 
     // Triangle prim of Scene mesh `mesh`, placed by Scene instance `instance`, met by the
     // world-space ray. False where the ray is parallel to the triangle in float.

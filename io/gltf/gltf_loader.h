@@ -44,6 +44,9 @@ struct GltfLoadStats {
     Stage meshes;     // accessors to TriangleMeshes, with their checks
     Stage materials;  // materials, with their texture images decoded
     Stage nodes;      // animations, the node tree, instances, deformation
+    // The file was parsed for this scene (GltfAsset::scene_at: else it posed a file parsed
+    // before, with parse zero).
+    bool parsed = false;
 };
 
 // Loads the file at path; throws SceneError for bad input, including a shutter that

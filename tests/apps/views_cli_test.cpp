@@ -309,17 +309,21 @@ TEST(ViewsCli, TheBoxCoversItsCornersProjectedExtentInEveryView) {
     std::printf("largest difference of the box's extent: %.3f px\n", worst);
 }
 
-// With frames, each frame's views share a load; transforms.json lists every image.
-TEST(ViewsCli, FramesTimesViewsLoadOncePerFrame) {
+// With frames, every image shares one load of the file, and each frame's views one pose
+// and accelerator build; transforms.json lists every image.
+TEST(ViewsCli, FramesTimesViewsLoadOnceAndPoseOncePerFrame) {
     const test::ScratchDir dir;
     const std::string scene = write_marker_scene(dir);
     const auto r = run_penumbra(
         render_args(scene, dir.file("out"), {"--views", "orbit:3", "--frames", "1-2"}, 1));
     ASSERT_EQ(r.status, 0) << r.output;
-    size_t loads = 0;
-    for (size_t at = 0; (at = r.output.find("load and build:", at)) != std::string::npos; ++at)
-        ++loads;
-    EXPECT_EQ(loads, 2u);
+    auto count = [&r](const std::string& what) {
+        size_t n = 0;
+        for (size_t at = 0; (at = r.output.find(what, at)) != std::string::npos; ++at) ++n;
+        return n;
+    };
+    EXPECT_EQ(count("load and build:"), 1u);
+    EXPECT_EQ(count("pose and build:"), 1u);
     const json t = read_json(dir.file("out/markers/transforms.json"));
     ASSERT_EQ(t.at("frames").size(), 6u);
     EXPECT_EQ(t["frames"][0]["file_path"], "0000_0001.png");
