@@ -80,10 +80,10 @@ struct Case {
 
 TEST(DenoiseQualityLong, OnBundledScenes) {
     const Case cases[] = {
-        {"cornell-box", 0.15, false},  // measured 0.045
-        {"glossy", 0.5, true},         // 0.31, estimate 0.88 of the measured error
-        {"dof", 0.3, true},            // 0.14, estimate 0.76
-        {"soft-shadows", 0.6, true},   // 0.41, estimate 0.90
+        {"cornell-box", 0.1, false},   // measured 0.031
+        {"glossy", 0.35, true},        // 0.22, estimate 0.98 of the measured error
+        {"dof", 0.2, true},            // 0.12, estimate 0.68
+        {"soft-shadows", 0.25, true},  // 0.13, estimate 0.80
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.scene);
