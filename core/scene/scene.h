@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -106,6 +107,25 @@ struct CameraDesc {
     float sensor_height_mm = 24;   // for f-stop to aperture conversion (full frame)
 };
 
+// The scene one frame before and one frame after the rendered frame (its shutter_open),
+// as far as motion vectors (Aov::Vector) need it: where each instance, each deforming
+// mesh's vertices and each camera are then. Loaded only when the Vector AOV is asked for.
+struct NeighbourFrame {
+    double time = 0;  // animation seconds
+    // Scene::instances[i]'s object-to-world matrix at `time` (a matrix, not a Transform:
+    // a node scaled to zero then is no error, and only points are mapped).
+    std::vector<Mat4> instances;
+    // Scene::meshes[m]'s vertex positions at `time` (object space); empty for a mesh whose
+    // vertices are its positions then too (every mesh that does not deform).
+    std::vector<std::vector<Vec3>> positions;
+    // Scene::cameras[c] at `time`: placed, and with its field of view then.
+    std::vector<CameraDesc> cameras;
+};
+
+struct FrameNeighbours {
+    NeighbourFrame previous, next;
+};
+
 struct Scene {
     std::string source;  // file the scene came from
     std::string generator;  // the tool that wrote it (glTF asset.generator), for messages
@@ -131,6 +151,9 @@ struct Scene {
     int hidden_material = -1;
     // Whether a hit's material depends on its time (either of the above).
     bool timed_materials = false;
+    // Motion vectors' other frames; empty unless the loader was asked for them
+    // (GltfLoadOptions::neighbour_frame_offset).
+    std::optional<FrameNeighbours> frame_neighbours;
 
     // World-space bounds of all instances, over the whole shutter for moving ones.
     Bounds3 bounds() const;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/color/scene_color.h"
+#include "io/gltf/animation/gltf_frame_neighbours.h"
 #include "io/gltf/animation/gltf_animation.h"
 #include "io/gltf/animation/gltf_node_motion.h"
 #include "io/gltf/animation/gltf_skin_weights.h"
@@ -198,10 +199,13 @@ Scene GltfAsset::scene_at(double shutter_open, double shutter_close, GltfLoadSta
     const GltfContext& ctx = *m->ctx;
     const NodeMotion motion(ctx, animations_of(*m), shutter);
     const int scene_index = choose_scene(ctx, m->options.scene);
+    scene.frame_neighbours.reset();  // a recycled scene's are another frame's
+    start_frame_neighbours(ctx, shutter, m->options.neighbour_frame_offset, scene);
     if (scene_index >= 0)
         load_nodes(ctx, scene_index, motion, m->origins, scene);
     else
         ctx.warn("scenes", "the file defines no scene; nothing will be rendered");
+    finish_frame_neighbours(ctx, motion, scene);
     // Summary warnings come last: under --strict, an element's own error is reported
     // before them, as without them. They are about the file, so a build reports them once.
     if (m->checks) {

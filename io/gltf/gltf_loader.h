@@ -22,6 +22,10 @@ struct GltfLoadOptions {
     // Equal values are a still at that time; both 0 (the default) is the file's pose at
     // time 0, which for a file without animations is its nodes' own transforms.
     double shutter_open = 0, shutter_close = 0;
+    // Motion vectors: when > 0, the scene is also posed this many seconds (a frame's
+    // duration) before and after shutter_open, into Scene::frame_neighbours; 0 leaves it
+    // empty and costs nothing.
+    double neighbour_frame_offset = 0;
     // KHR_materials_variants: the variant whose materials primitives use where they map
     // one; empty: every primitive's default material. An unknown name is a SceneError.
     std::string variant = "";

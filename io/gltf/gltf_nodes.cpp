@@ -298,6 +298,30 @@ CameraDesc make_scene_camera(const GltfContext& ctx, const NodeMotion& motion, i
     return c;
 }
 
+// Motion vectors: the camera of node `index` at the neighbouring frames, placed and with
+// its field of view then (Scene::frame_neighbours). `world`: the node's still transform.
+void add_neighbour_cameras(const GltfContext& ctx, const NodeMotion& motion, int index,
+                           const Transform& world, FrameNeighbours& neighbours) {
+    const tinygltf::Node& node = ctx.model.nodes[size_t(index)];
+    const tinygltf::Camera& file = ctx.model.cameras[size_t(node.camera)];
+    const std::vector<PropertyChannel> channels =
+        usable_channels(ctx, element("cameras", size_t(node.camera)), file,
+                        motion.animations().properties(PointerObject::Camera, node.camera));
+    for (NeighbourFrame* f : {&neighbours.previous, &neighbours.next}) {
+        // A camera scaled to zero then keeps its pose at the frame: it has no view to give.
+        Transform at = world;
+        if (motion.moves(index)) {
+            try {
+                at = Transform(motion.world(index, f->time));
+            } catch (const std::invalid_argument&) {
+            }
+        }
+        CameraDesc c = make_camera(ctx, node.camera, animated(file, channels, f->time), node, at);
+        c.node = index;
+        f->cameras.push_back(std::move(c));
+    }
+}
+
 // glTF 2.0, section 3.7.3.1: a skin's joints and skeleton root belong to the scene that
 // draws it (the validator's NODE_SKIN_NO_SCENE). Outside it their pose is undefined:
 // three.js draws such a skin collapsed, and we pose those nodes from their own transforms
@@ -409,6 +433,8 @@ void load_nodes(const GltfContext& ctx, int scene_index, const NodeMotion& motio
         if (node.camera != -1) {
             ctx.check_index(el, "camera", node.camera, m.cameras.size(), "cameras");
             scene.cameras.push_back(make_scene_camera(ctx, motion, index, world, steps));
+            if (scene.frame_neighbours)
+                add_neighbour_cameras(ctx, motion, index, world, *scene.frame_neighbours);
         }
         const int light = node_light(ctx, el, node);
         if (light >= 0 && shown) lights.push_back({light, index, world, !steps.empty()});

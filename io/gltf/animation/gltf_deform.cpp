@@ -150,27 +150,35 @@ size_t morph_target_count(const GltfContext& ctx, int node_index) {
     return targets;
 }
 
-// Morph weights and joint matrices (joint world times inverse bind) at each shutter step.
+// Morph weights and joint matrices (joint world times inverse bind) at each of some times:
+// the shutter's steps, or a motion vector's neighbouring frames.
 struct StepInputs {
     std::vector<std::vector<double>> weights;
     std::vector<std::vector<Mat4>> joint_matrices;  // empty per step without a skin
 };
 
-StepInputs sample_steps(const GltfContext& ctx, const NodeMotion& motion, int node_index,
-                        size_t targets, const std::optional<Skin>& skin, int steps) {
-    const Shutter& shutter = motion.shutter();
+StepInputs sample_times(const GltfContext& ctx, const NodeMotion& motion, int node_index,
+                        size_t targets, const std::optional<Skin>& skin,
+                        const std::vector<double>& times) {
     StepInputs in;
-    in.joint_matrices.resize(static_cast<size_t>(steps));
-    in.weights.resize(static_cast<size_t>(steps));
-    for (int k = 0; k < steps; ++k) {
-        const double t = shutter.time(k, steps);
-        in.weights[size_t(k)] = weights_at(ctx, motion, node_index, targets, t);
+    in.joint_matrices.resize(times.size());
+    in.weights.resize(times.size());
+    for (size_t k = 0; k < times.size(); ++k) {
+        const double t = times[k];
+        in.weights[k] = weights_at(ctx, motion, node_index, targets, t);
         if (skin)
             for (size_t j = 0; j < skin->joints.size(); ++j)
-                in.joint_matrices[size_t(k)].push_back(motion.world(skin->joints[j], t) *
-                                                       skin->inverse_bind[j]);
+                in.joint_matrices[k].push_back(motion.world(skin->joints[j], t) *
+                                               skin->inverse_bind[j]);
     }
     return in;
+}
+
+StepInputs sample_steps(const GltfContext& ctx, const NodeMotion& motion, int node_index,
+                        size_t targets, const std::optional<Skin>& skin, int steps) {
+    std::vector<double> times;
+    for (int k = 0; k < steps; ++k) times.push_back(motion.shutter().time(k, steps));
+    return sample_times(ctx, motion, node_index, targets, skin, times);
 }
 
 // Linear blend skinning: sum of weight * joint world * inverse bind, for file vertex v.
@@ -256,6 +264,24 @@ TriangleMesh deform_mesh(const GltfContext& ctx, const std::string& el, const Tr
     return mesh;
 }
 
+// Motion vectors: the deformed mesh's positions at the neighbouring frames
+// (Scene::frame_neighbours), kept only where they differ from its positions at the frame.
+void add_neighbour_positions(const TriangleMesh& base, const TriangleMesh& deformed,
+                             uint32_t mesh_index, const MeshOrigin& origin,
+                             const PrimitiveDeformation& d, const StepInputs& in,
+                             size_t targets, bool skinned, FrameNeighbours& neighbours) {
+    NeighbourFrame* frames[2] = {&neighbours.previous, &neighbours.next};
+    for (size_t k = 0; k < 2; ++k) {
+        std::vector<Vec3> p, n;
+        deform_step(base, origin, d, in.weights[k], targets,
+                    skinned ? &in.joint_matrices[k] : nullptr, p, n);
+        if (p == deformed.positions) continue;
+        std::vector<std::vector<Vec3>>& positions = frames[k]->positions;
+        if (positions.size() <= mesh_index) positions.resize(size_t(mesh_index) + 1);
+        positions[mesh_index] = std::move(p);
+    }
+}
+
 }  // namespace
 
 std::optional<DeformedObject> add_deformed_object(const GltfContext& ctx, const NodeMotion& motion,
@@ -280,8 +306,17 @@ std::optional<DeformedObject> add_deformed_object(const GltfContext& ctx, const 
     for (double w : weights_at(ctx, motion, node_index, targets, motion.shutter().open))
         morphed = morphed || w != 0;
     const int steps = motion.steps(curves);
-    if (!skin && !morphed && steps < 2) return std::nullopt;
+    // Motion vectors see the frames around this one: animated weights may deform the
+    // mesh there while it rests at the frame itself.
+    const bool neighbours = scene.frame_neighbours.has_value();
+    const bool animated_weights = nc && nc->weights;
+    if (!skin && !morphed && steps < 2 && !(neighbours && animated_weights)) return std::nullopt;
     const StepInputs in = sample_steps(ctx, motion, node_index, targets, skin, steps);
+    StepInputs around;
+    if (neighbours)
+        around = sample_times(ctx, motion, node_index, targets, skin,
+                              {scene.frame_neighbours->previous.time,
+                               scene.frame_neighbours->next.time});
 
     Object object;
     object.name = scene.objects[size_t(node.mesh)].name + " (" + el + ")";
@@ -290,6 +325,10 @@ std::optional<DeformedObject> add_deformed_object(const GltfContext& ctx, const 
         const PrimitiveDeformation d = read_primitive(ctx, origin, skin ? skin->joints.size() : 0);
         TriangleMesh mesh = deform_mesh(ctx, el, scene.meshes[mesh_index], origin, d, in, targets,
                                         skin.has_value());
+        if (neighbours)
+            add_neighbour_positions(scene.meshes[mesh_index], mesh, uint32_t(scene.meshes.size()),
+                                    origin, d, around, targets, skin.has_value(),
+                                    *scene.frame_neighbours);
         object.bounds.expand(mesh.bounds);
         object.meshes.push_back(uint32_t(scene.meshes.size()));
         scene.meshes.push_back(std::move(mesh));

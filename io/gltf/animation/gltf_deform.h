@@ -1,7 +1,8 @@
 // Internal to io/: deformation. A node whose mesh is skinned, or has morph targets with
 // nonzero or animated weights, gets its own copy of the mesh, deformed at shutter open
 // and, when it changes within the shutter, at each time step (TriangleMesh's
-// motion_positions and motion_normals).
+// motion_positions and motion_normals), and for motion vectors at the neighbouring frames
+// (Scene::frame_neighbours).
 #pragma once
 
 #include <cstdint>
