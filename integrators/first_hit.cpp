@@ -1,6 +1,7 @@
 #include "integrators/first_hit.h"
 
 #include "core/camera/camera_culling.h"
+#include "integrators/motion_vector.h"
 
 namespace penumbra {
 
@@ -25,7 +26,7 @@ std::optional<VisibleSurface> first_visible_surface(Ray& ray, const RenderContex
                 continue;
             }
         }
-        return VisibleSurface{sp, shade(ctx.scene, sp, normalize(-ray.d), ctx.materials)};
+        return VisibleSurface{sp, shade(ctx.scene, sp, normalize(-ray.d), ctx.materials), *hit};
     }
     return std::nullopt;
 }
@@ -43,7 +44,8 @@ AovRecord first_hit_aovs(const Ray& camera_ray, const RenderContext& ctx, uint64
         const std::optional<VisibleSurface> s =
             first_visible_surface(ray, ctx, rng, true, first_hit);
         if (!s) return {};
-        v = {true, s->sp.p, s->sp.instance, s->sp.material, s->sd.base_color, s->sd.frame.n};
+        v = {true, s->sp.p, s->sp.instance, s->sp.material, s->sd.base_color, s->sd.frame.n,
+             s->hit};
     }
     AovRecord rec;
     rec.hit = true;
@@ -57,6 +59,7 @@ AovRecord first_hit_aovs(const Ray& camera_ray, const RenderContext& ctx, uint64
         rec.object_hash = hashes->object(v.instance);
         rec.material_hash = hashes->material(v.material);
     }
+    if (ctx.motion_vectors) rec.motion = motion_vector(ctx.scene, *ctx.motion_vectors, v.hit);
     return rec;
 }
 

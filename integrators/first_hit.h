@@ -1,8 +1,8 @@
 // What a camera ray sees first: the first surface it does not pass through (shared by
 // the first-hit AOVs and the denoiser's guides), and the first-hit AOVs (albedo, shading
-// normal, distance, position, IDs), computed only when asked for. They take the path
-// integrator's first vertex where it is that surface (FirstVertex); otherwise, and for
-// other integrators, they find and shade it with their own ray casts.
+// normal, distance, position, IDs, motion vector), computed only when asked for. They
+// take the path integrator's first vertex where it is that surface (FirstVertex);
+// otherwise, and for other integrators, they find and shade it with their own ray casts.
 #pragma once
 
 #include <cstdint>
@@ -20,6 +20,7 @@ namespace penumbra {
 struct VisibleSurface {
     SurfacePoint sp;
     ShadingData sd;  // shaded for wo = -ray.d
+    Hit hit;         // the accelerator's hit that sp was made from
 };
 
 // Traces `ray` to the first surface it does not pass through; empty if it escapes.

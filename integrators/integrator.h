@@ -17,6 +17,8 @@
 
 namespace penumbra {
 
+struct MotionVectorCameras;  // integrators/motion_vector.h
+
 // What an integrator traces against: the scene data, its accelerator and its lights.
 // The scene's media are built here, from its materials, so that every render (CLI,
 // tests, benchmarks) sees the same volumes.
@@ -63,6 +65,8 @@ struct RenderContext {
     bool has_emission = true;
     // Shared by copies, so that each copy's materials.prototypes stays valid.
     std::shared_ptr<const BsdfPrototypes> prototypes;
+    // The cameras motion vectors map points with (Aov::Vector); nullptr: no vectors.
+    const MotionVectorCameras* motion_vectors = nullptr;
 };
 
 // Which strategies estimate light from non-delta emitters in "path": both with MIS, or
@@ -102,6 +106,7 @@ struct FirstVertex {
     int material = -1;
     Spectrum albedo;  // ShadingData::base_color
     Vec3 normal;      // the shading normal
+    Hit hit;          // the accelerator's hit (motion vectors read its triangle and barycentrics)
 };
 
 class Integrator {

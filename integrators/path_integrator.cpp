@@ -215,8 +215,10 @@ template <bool kMedia>
 }
 
 // What the first-hit AOVs read of the first vertex (FirstVertex).
-inline void record_first_vertex(const SurfacePoint& sp, const ShadingData& sd, FirstVertex& first) {
+inline void record_first_vertex(const Hit& hit, const SurfacePoint& sp, const ShadingData& sd,
+                                FirstVertex& first) {
     first.valid = true;
+    first.hit = hit;
     first.p = sp.p;
     first.instance = sp.instance;
     first.material = sp.material;
@@ -296,7 +298,7 @@ Spectrum PathIntegrator::trace(const Ray& camera_ray, const std::optional<Hit>* 
             shade_vertex<kMedia>(ctx, sp, wo_world, materials, media, sampler, path);
 
         if (first && path.depth == 0 && !flipped && sd.opacity >= 1)
-            record_first_vertex(sp, sd, *first);
+            record_first_vertex(*hit, sp, sd, *first);
 
         // Without MASK or BLEND materials every coverage is 1 and nothing passes.
         Coverage cover;

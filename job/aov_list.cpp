@@ -7,7 +7,8 @@ namespace penumbra {
 const std::vector<std::string>& aov_names() {
     static const std::vector<std::string> names = {
         "albedo",    "normal",      "depth",          "position",       "variance", "samples",
-        "error",     "object_id",   "material_id",    "crypto_object", "crypto_material"};
+        "error",     "object_id",   "material_id",    "crypto_object", "crypto_material",
+        "vector"};
     return names;
 }
 

@@ -10,7 +10,7 @@
 namespace penumbra {
 
 // "albedo,normal,depth,position,variance,samples,error,object_id,material_id,crypto_object,
-// crypto_material" (any subset, any order; "cryptomatte" for both Cryptomatte layers, "all"
+// crypto_material,vector" (any subset, any order; "cryptomatte" for both Cryptomatte layers, "all"
 // for every one but error, which changes the sample streams, and Cryptomatte). Throws
 // std::invalid_argument naming an unknown entry.
 AovSet parse_aovs(const std::string& list);

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "integrators/render.h"
 #include "io/image/render_writer.h"
+#include "job/aov_list.h"
 #include "job/option_table.h"
 
 namespace penumbra::python {
@@ -31,9 +32,11 @@ const std::set<std::string>& after_setup_options() {
 }
 
 // The options the set-up depends on, as text. Of --views only whether there are views
-// counts: with views the set-up frames the automatic camera (setup_scene).
+// counts: with views the set-up frames the automatic camera (setup_scene). Of --aov only
+// whether it has motion vectors: the scene is loaded with its neighbouring frames then.
 std::string setup_key(const RenderCommandOptions& o) {
     std::string key = o.views.empty() ? "views=0" : "views=1";
+    key += parse_aovs(o.aovs).has(Aov::Vector) ? "\nvector=1" : "\nvector=0";
     for (const OptionDecl& d : render_option_table())
         if (d.get && !after_setup_options().count(d.flag)) key += "\n" + d.flag + "=" + d.get(o);
     return key;

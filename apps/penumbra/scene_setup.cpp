@@ -112,6 +112,8 @@ GltfLoadStats load_scene(const RenderCommandOptions& o, SceneSource& source, Sce
     if (!asset) {
         GltfLoadOptions load = o.gltf;
         load.rec709_to_working = s.color->rec709_to_working();
+        // Motion vectors reach one frame to each side.
+        if (parse_aovs(o.aovs).has(Aov::Vector)) load.neighbour_frame_offset = 1 / o.timeline.fps;
         asset = std::make_unique<GltfAsset>(path, load);
     }
     GltfLoadStats load_stats;
@@ -156,6 +158,7 @@ void choose_camera_and_size(const RenderCommandOptions& o, SceneSetup& s) {
                       : (o.height ? std::max(1, int(std::lround(o.height * aspect))) : 640);
     s.height = o.height ? o.height : std::max(1, int(std::lround(s.width / aspect)));
     s.camera_desc = file_cam ? *file_cam : default_camera(scene.bounds(), aspect);
+    s.file_camera = file_cam ? int(file_cam - scene.cameras.data()) : -1;
     if (!file_cam && o.views.empty())
         LOG_INFO(s.path << ": no camera in the file; using one that frames the scene");
 }
@@ -231,10 +234,24 @@ void build_accel(const RenderCommandOptions& o, const GltfLoadStats& ls, SceneSo
     LOG_INFO(s.path << (ls.parsed ? ": load and build: " : ": pose and build: ") << line);
 }
 
+// The motion vectors' cameras for the camera just chosen: a file camera's own poses at the
+// neighbouring frames; views and the automatic camera stand still.
+void set_motion_cameras(SceneSetup& s) {
+    if (!s.scene.frame_neighbours) return;
+    const FrameNeighbours& n = *s.scene.frame_neighbours;
+    const size_t c = size_t(s.file_camera);
+    const bool file = s.file_camera >= 0;
+    s.motion_cameras = motion_vector_cameras(s.camera_desc, file ? &n.previous.cameras[c] : nullptr,
+                                             file ? &n.next.cameras[c] : nullptr, s.width,
+                                             s.height);
+}
+
 }  // namespace
 
 RenderContext SceneSetup::context() const {
-    return RenderContext{scene, *accel, *lights, scene_has_alpha(scene), materials};
+    RenderContext ctx{scene, *accel, *lights, scene_has_alpha(scene), materials};
+    if (motion_cameras) ctx.motion_vectors = &*motion_cameras;
+    return ctx;
 }
 
 std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std::string& path) {
@@ -256,6 +273,7 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
     apply_lens_options(o.lens, path, s->width, s->height, s->scene, *s->accel, s->camera_desc);
 
     s->camera = make_camera(s->camera_desc, s->width, s->height);
+    set_motion_cameras(*s);
     s->materials = o.materials;
     // What the camera sees decides too: the file's lights can pass the rule in
     // setup_lights and still leave the view dark (a filament inside its lamp, watts
@@ -268,8 +286,10 @@ std::unique_ptr<SceneSetup> setup_scene(const RenderCommandOptions& o, const std
 
 void use_view(SceneSetup& s, size_t index, const RenderCommandOptions& o) {
     s.camera_desc = s.views.at(index);
+    s.file_camera = -1;
     apply_lens_options(o.lens, s.path, s.width, s.height, s.scene, *s.accel, s.camera_desc);
     s.camera = make_camera(s.camera_desc, s.width, s.height);
+    set_motion_cameras(s);
 }
 
 RenderOptions render_options_for(const RenderCommandOptions& o, const std::string& label) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "core/camera/camera.h"
 #include "core/lights/light_set.h"
 #include "core/scene/scene.h"
+#include "integrators/motion_vector.h"
 #include "integrators/render.h"
 #include "io/color/color.h"
 
@@ -22,6 +24,11 @@ struct SceneSetup {
     std::string path;
     Scene scene;
     CameraDesc camera_desc;  // after lens overrides
+    // Which of scene.cameras camera_desc is; -1 for a view or the automatic camera.
+    int file_camera = -1;
+    // The cameras that map motion vectors, for a scene loaded with frame neighbours
+    // (Aov::Vector); set with the camera.
+    std::optional<MotionVectorCameras> motion_cameras;
     // --views: every view's camera, before lens overrides (use_view applies them). The
     // default lights and the dark-view check follow the default camera, so every view
     // sees the scene lit alike.

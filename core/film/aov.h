@@ -1,6 +1,6 @@
 // Arbitrary output variables (AOVs): per-pixel images besides the beauty. The first-hit
-// ones (albedo, normal, depth, position, object and material IDs) describe what the camera
-// ray hit; variance and samples describe the beauty estimate itself.
+// ones (albedo, normal, depth, position, object and material IDs, motion vectors) describe
+// what the camera ray hit; variance and samples describe the beauty estimate itself.
 #pragma once
 
 #include <cstdint>
@@ -33,15 +33,20 @@ enum class Aov : uint32_t {
     // and material name: each pixel's IDs ranked by coverage, with anti-aliasing.
     CryptoObject = 512,
     CryptoMaterial = 1024,
+    // Motion vectors, as Cycles' Vector pass: in raster pixels, Cycles' +Y up the image,
+    // (previous - current, current - next) of the first surface's point, mapped by each
+    // frame's camera (integrators/motion_vector.h). Averaged over the samples that hit,
+    // as depth; 0 where none did.
+    Vector = 2048,
     // Not an AOV of its own, and --aov does not name it (job/aov_list.h): the denoiser's input
     // (Film::denoise_input). The film keeps the guide features' sums and the beauty's
     // squares, over all samples and over the odd-indexed ones; like Error, it draws the
     // odd sample indices from a second sample stream.
-    Denoise = 2048,
+    Denoise = 4096,
     // Not named either: a transparent background (--transparent-background). The film sums
     // each camera sample's coverage of geometry with the colour's weights, and its alpha
     // is their mean instead of 1.
-    Coverage = 4096,
+    Coverage = 8192,
 };
 
 // The ID layers' values where no sample hit anything, and for glTF's default material.
@@ -62,7 +67,7 @@ public:
         return (m_bits & (uint32_t(Aov::Albedo) | uint32_t(Aov::Normal) | uint32_t(Aov::Depth) |
                           uint32_t(Aov::Position) | uint32_t(Aov::ObjectId) |
                           uint32_t(Aov::MaterialId) | uint32_t(Aov::CryptoObject) |
-                          uint32_t(Aov::CryptoMaterial))) != 0;
+                          uint32_t(Aov::CryptoMaterial) | uint32_t(Aov::Vector))) != 0;
     }
     bool has_ids() const { return has(Aov::ObjectId) || has(Aov::MaterialId); }
     // Error or denoising: the samples form two independently seeded halves.
@@ -96,6 +101,8 @@ struct AovRecord {
     // the Cryptomatte hashes of their names (read where hit).
     int32_t object = kNoHitId, material = kNoHitId;
     uint32_t object_hash = 0, material_hash = 0;
+    // The first surface's motion vector (Aov::Vector), read where hit.
+    Vec4 motion;
     // Squared distance of the sample from the pixel's centre, in pixels: the ID layers
     // keep the nearest sample's IDs.
     float offset2 = 0;

@@ -41,7 +41,9 @@ Film::Film(int width, int height, AovSet aovs)
     if (aovs.has(Aov::Albedo) || aovs.has(Aov::Normal)) m_aov.weight.assign(n, 0.0);
     if (aovs.has(Aov::Depth)) m_aov.depth.assign(n, 0.0);
     if (aovs.has(Aov::Position)) m_aov.position.assign(n, Sum3{});
-    if (aovs.has(Aov::Depth) || aovs.has(Aov::Position)) m_aov.hit_weight.assign(n, 0.0);
+    if (aovs.has(Aov::Vector)) m_aov.motion.assign(n, std::array<double, 4>{});
+    if (aovs.has(Aov::Depth) || aovs.has(Aov::Position) || aovs.has(Aov::Vector))
+        m_aov.hit_weight.assign(n, 0.0);
     const bool denoise = aovs.has(Aov::Denoise);
     if (aovs.has(Aov::Variance) || denoise) {
         m_aov.square.assign(n, Sum3{});
@@ -129,6 +131,10 @@ void Film::add_sample(int x, int y, Spectrum L, float w, const AovRecord& aov) {
         m_aov.hit_weight[i] += w;
         if (!m_aov.depth.empty()) m_aov.depth[i] += double(aov.depth) * w;
         add3(m_aov.position, i, aov.position, w);
+        // Weighted like depth, over the samples that hit: Cycles, too, sums each sample's
+        // vector with a weight of its own and divides by that weight's sum.
+        if (!m_aov.motion.empty())
+            for (int c = 0; c < 4; ++c) m_aov.motion[i][size_t(c)] += double(aov.motion[c]) * w;
     }
 }
 
@@ -176,7 +182,8 @@ Image Film::resolve_aov(Aov aov) const {
     const bool scalar = aov == Aov::Depth || aov == Aov::Samples || aov == Aov::Error ||
                         aov == Aov::ObjectId || aov == Aov::MaterialId;
     const bool crypto = aov == Aov::CryptoObject || aov == Aov::CryptoMaterial;
-    Image img(m_width, m_height, crypto ? 2 * kCryptomatteRanks : scalar ? 1 : 3);
+    Image img(m_width, m_height,
+              crypto ? 2 * kCryptomatteRanks : scalar ? 1 : aov == Aov::Vector ? 4 : 3);
     if (!m_aovs.has(aov)) return img;
     for (size_t i = 0; i < m_pixels.size(); ++i) {
         float* out = &img.pixels[i * img.channels];
@@ -197,6 +204,12 @@ Image Film::resolve_aov(Aov aov) const {
             case Aov::Depth:
                 out[0] = m_aov.hit_weight[i] != 0 ? float(m_aov.depth[i] / m_aov.hit_weight[i])
                                                   : kNoHitDepth;
+                break;
+            case Aov::Vector:
+                for (int c = 0; c < 4; ++c)
+                    out[c] = m_aov.hit_weight[i] != 0
+                                 ? float(m_aov.motion[i][size_t(c)] / m_aov.hit_weight[i])
+                                 : 0.0f;
                 break;
             case Aov::Samples:
                 out[0] = float(m_aov.count[i]);
@@ -304,7 +317,8 @@ std::vector<Film::Buffer> Film::buffers() {
             raw("coverage_odd", m_aov.coverage_odd),
             raw("ids", m_aov.ids),
             raw("crypto_object", m_aov.crypto_object),
-            raw("crypto_material", m_aov.crypto_material)};
+            raw("crypto_material", m_aov.crypto_material),
+            raw("motion", m_aov.motion)};
 }
 
 uint64_t Film::nonfinite_samples() const {

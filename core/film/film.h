@@ -42,9 +42,10 @@ public:
     // samples' coverage, with the colour's weights (0 where the pixel has no samples); the
     // colour, whose misses count as zero, is then premultiplied by it.
     Image resolve() const;
-    // One AOV's image: 3 channels (albedo, normal, position, variance) or 1 (depth,
-    // samples, IDs). Albedo and normal average over all samples (a miss counts as zero);
-    // depth and position over the samples that hit (kNoHitDepth and 0 where none did).
+    // One AOV's image: 3 channels (albedo, normal, position, variance), 4 (vector) or 1
+    // (depth, samples, IDs). Albedo and normal average over all samples (a miss counts as
+    // zero); depth, position and vector over the samples that hit (kNoHitDepth and 0 where
+    // none did).
     // Error is relative_error (1 channel). The IDs are those of the sample nearest the
     // pixel's centre (the earliest of equally near ones), as exact integers in floats.
     // Cryptomatte gives 2 kCryptomatteRanks channels: per rank the ID (cryptomatte_float)
@@ -84,6 +85,8 @@ private:
     struct AovSums {
         std::vector<Sum3> albedo, normal, position, square;      // square: w L^2
         std::vector<double> weight, hit_weight, depth, weight2;  // weight2: w^2
+        // Motion vectors: the sum of w times each hit sample's vector.
+        std::vector<std::array<double, 4>> motion;
         std::vector<uint32_t> count;
         // Error estimate: the sums of the odd-indexed samples (the second half); the
         // first half is the pixel's total less these.

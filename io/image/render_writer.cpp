@@ -40,6 +40,9 @@ const std::vector<AovLayout>& aov_layouts() {
         // compositor and Nuke read ID passes; 32-bit, exact to 2^24.
         {Aov::ObjectId, "ObjectID", {"X"}, false, true},
         {Aov::MaterialId, "MaterialID", {"X"}, false, true},
+        // Blender's Vector pass and channels; pixels, with sub-pixel precision beyond
+        // half's in big images.
+        {Aov::Vector, "Vector", {"X", "Y", "Z", "W"}, false, true},
     };
     return list;
 }

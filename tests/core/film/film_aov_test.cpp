@@ -33,8 +33,9 @@ TEST(FilmAov, ParsesTheList) {
     EXPECT_FALSE(parse_aovs("").any());
     const AovSet all = parse_aovs("all");
     for (Aov a : {Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Position, Aov::Variance, Aov::Samples,
-                  Aov::ObjectId, Aov::MaterialId})
+                  Aov::ObjectId, Aov::MaterialId, Aov::Vector})
         EXPECT_TRUE(all.has(a));
+    EXPECT_TRUE(parse_aovs("vector").needs_first_hit());
     EXPECT_FALSE(all.has(Aov::Denoise));
     EXPECT_FALSE(all.has(Aov::Coverage));
     EXPECT_THROW(parse_aovs("albedo,emission"), std::invalid_argument);
@@ -62,6 +63,27 @@ TEST(FilmAov, FirstHitAveragesUseTheFilterWeights) {
     EXPECT_EQ(depth.at(1, 0)[0], Film::kNoHitDepth);
     EXPECT_EQ(albedo.at(1, 0)[0], 0);
     EXPECT_EQ(samples.at(1, 0)[0], 0);
+}
+
+TEST(FilmAov, VectorsAverageOverTheHitsAsDepthDoes) {
+    Film film(2, 1, parse_aovs("vector"));
+    AovRecord a = hit({}, {}, {}, 1), b = hit({}, {}, {}, 1);
+    a.motion = {1, -2, 3, -4};
+    b.motion = {5, 6, -7, 8};
+    // Pixel 0: two hits (weights 1 and 3) and a miss (weight 4), which counts for nothing.
+    film.add_sample(0, 0, {1, 1, 1}, 1, a);
+    film.add_sample(0, 0, {1, 1, 1}, 3, b);
+    AovRecord miss;
+    miss.motion = {100, 100, 100, 100};
+    film.add_sample(0, 0, {1, 1, 1}, 4, miss);
+    film.add_sample(1, 0, {1, 1, 1}, 1, miss);
+    const Image v = film.resolve_aov(Aov::Vector);
+    ASSERT_EQ(v.channels, 4);
+    const float expected[4] = {(1 + 15) / 4.0f, (-2 + 18) / 4.0f, (3 - 21) / 4.0f,
+                               (-4 + 24) / 4.0f};
+    for (int c = 0; c < 4; ++c) EXPECT_FLOAT_EQ(v.at(0, 0)[c], expected[c]) << c;
+    // Pixel 1: no sample hit, no vector.
+    for (int c = 0; c < 4; ++c) EXPECT_EQ(v.at(1, 0)[c], 0.0f) << c;
 }
 
 TEST(FilmAov, VarianceIsThatOfTheMean) {

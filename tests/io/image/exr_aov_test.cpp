@@ -99,7 +99,8 @@ TEST(ExrAov, LayersReadBackWithTheirNamesAndValues) {
         "A",        "Albedo.B",   "Albedo.G",     "Albedo.R",   "B",
         "Depth.Z",  "G",          "MaterialID.X", "Normal.X",   "Normal.Y",
         "Normal.Z", "ObjectID.X", "Position.X",   "Position.Y", "Position.Z",
-        "R",        "Samples.X",  "Variance.B",   "Variance.G", "Variance.R"};
+        "R",        "Samples.X",  "Variance.B",   "Variance.G", "Variance.R",
+        "Vector.W", "Vector.X",   "Vector.Y",     "Vector.Z"};
     EXPECT_EQ(names, expected);
     // The IDs are 32-bit floats holding integers.
     EXPECT_EQ(e.spec.channelformat(e.spec.channelindex("ObjectID.X")), OIIO::TypeDesc::FLOAT);
@@ -120,6 +121,8 @@ TEST(ExrAov, LayersReadBackWithTheirNamesAndValues) {
             EXPECT_EQ(e.at("Samples.X", x, y), float(kSpp));
             EXPECT_GE(e.at("Variance.R", x, y), 0);
             EXPECT_EQ(e.at("MaterialID.X", x, y), 0.0f);  // the plane's material
+            // A scene loaded without its neighbouring frames has no motion.
+            EXPECT_EQ(e.at("Vector.X", x, y), 0.0f);
         }
     // Beyond the plane: nothing hit.
     for (int y = 0; y < kH; ++y)
