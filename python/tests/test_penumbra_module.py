@@ -32,6 +32,7 @@ CHANNELS = {
     "normal": ["Normal.X", "Normal.Y", "Normal.Z"],
     "depth": ["Depth.Z"],
     "noisy": ["Noisy.R", "Noisy.G", "Noisy.B"],
+    "vector": ["Vector.X", "Vector.Y", "Vector.Z", "Vector.W"],
 }
 
 
@@ -107,6 +108,22 @@ class ModuleMatchesCli(unittest.TestCase):
             for v, image in enumerate(images):
                 np.testing.assert_allclose(image["camera"]["transform_matrix"],
                                            frames[v]["transform_matrix"], rtol=0, atol=1e-6)
+
+    def test_motion_vectors_equal_the_cli_exr(self):
+        scene = penumbra.load(FOX, width=40, height=32, spp=2, time=0.5, aov="depth")
+        scene.render()
+        # Vectors need the frames around this one: one more load, then none.
+        image = scene.render(aov="vector")
+        again = scene.render(aov="vector,depth")
+        self.assertEqual(scene.loads, 2)
+        self.assertEqual(image["vector"].shape, (32, 40, 4))
+        self.assertGreater(np.abs(image["vector"]).max(), 0.01)  # the fox moves
+        self.assertTrue(np.array_equal(image["vector"], again["vector"]))
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "fox.exr")
+            cli_render(FOX, out, "--width", "40", "--height", "32", "--spp", "2", "--time",
+                       "0.5", "--aov", "vector")
+            self.assert_bitwise(image, read_exr(out), ["rgba", "vector"])
 
     def test_a_cameras_file_gives_the_cli_views(self):
         cameras = [{"name": "high", "position": [0.5, 1.5, 3.5], "look_at": [0, 1, 0], "yfov": 50},

@@ -60,7 +60,8 @@ TEST(BlenderRoundTrip, CompositorSeesEveryAovAsANamedPass) {
     const std::string passes = " " + m[1].str() + " ";
     for (const char* p :
          {"Combined:RGBA", "Alpha:VALUE", "Albedo:RGBA", "Depth:VALUE", "Normal:RGBA",
-          "Position:RGBA", "Variance:RGBA", "Samples:VALUE", "ObjectID:VALUE", "MaterialID:VALUE"})
+          "Position:RGBA", "Variance:RGBA", "Samples:VALUE", "ObjectID:VALUE", "MaterialID:VALUE",
+          "Vector:RGBA"})
         EXPECT_NE(passes.find(std::string(" ") + p + " "), std::string::npos)
             << p << " not among: " << passes;
 }
