@@ -17,12 +17,13 @@ Mat4 ndc_to_raster(int width, int height) {
     return m;
 }
 
-// The point through a world-to-raster matrix (homogeneous); empty w gives NaN.
+// The point through a world-to-raster matrix (homogeneous); w = 0 (a point in the
+// camera's plane) gives a non-finite result.
 Vec2 raster(const Mat4& m, Vec3 p) {
-    const double x = double(m(0, 0)) * p.x + double(m(0, 1)) * p.y + double(m(0, 2)) * p.z + m(0, 3);
-    const double y = double(m(1, 0)) * p.x + double(m(1, 1)) * p.y + double(m(1, 2)) * p.z + m(1, 3);
-    const double w = double(m(3, 0)) * p.x + double(m(3, 1)) * p.y + double(m(3, 2)) * p.z + m(3, 3);
-    return {float(x / w), float(y / w)};
+    const float x = m(0, 0) * p.x + m(0, 1) * p.y + m(0, 2) * p.z + m(0, 3);
+    const float y = m(1, 0) * p.x + m(1, 1) * p.y + m(1, 2) * p.z + m(1, 3);
+    const float w = m(3, 0) * p.x + m(3, 1) * p.y + m(3, 2) * p.z + m(3, 3);
+    return {x / w, y / w};
 }
 
 Vec3 affine(const Mat4& m, Vec3 p) {
@@ -67,9 +68,7 @@ Vec4 motion_vector(const Scene& scene, const MotionVectorCameras& cameras, const
     const Vec2 before = raster(cameras.previous, neighbour_point(n.previous, mesh, hit));
     const Vec2 after = raster(cameras.next, neighbour_point(n.next, mesh, hit));
     const Vec4 v(before.x - at.x, before.y - at.y, at.x - after.x, at.y - after.y);
-    for (int c = 0; c < 4; ++c)
-        if (!std::isfinite(v[c])) return {};
-    return v;
+    return std::isfinite(v.x + v.y + v.z + v.w) ? v : Vec4{};
 }
 
 }  // namespace penumbra
