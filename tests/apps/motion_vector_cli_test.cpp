@@ -50,9 +50,8 @@ std::string box_scene(const test::ScratchDir& dir, const std::vector<float>& box
         const int values = b.add<float>(
             {from[0], from[1], from[2], from[0] + 2 * v[0], from[1] + 2 * v[1], from[2] + 2 * v[2]},
             test::kFloat, "VEC3");
-        samplers.push_back("{\"input\":" + std::to_string(times) +
-                           ",\"output\":" + std::to_string(values) +
-                           ",\"interpolation\":\"LINEAR\"}");
+        samplers.push_back("{\"input\":" + std::to_string(times) + ",\"output\":" +
+                           std::to_string(values) + ",\"interpolation\":\"LINEAR\"}");
         channels.push_back("{\"sampler\":" + std::to_string(samplers.size() - 1) +
                            ",\"target\":{\"node\":" + std::to_string(node) +
                            ",\"path\":\"translation\"}}");
@@ -62,11 +61,10 @@ std::string box_scene(const test::ScratchDir& dir, const std::vector<float>& box
     if (spin != 0) {
         // LINEAR rotation is a slerp: the angle grows evenly, from 0 to 2 spin (< pi).
         const int times = b.add<float>({0, 2}, test::kFloat, "SCALAR");
-        const int values = b.add<float>({0, 0, 0, 1, 0, 0, std::sin(spin), std::cos(spin)},
-                                        test::kFloat, "VEC4");
-        samplers.push_back("{\"input\":" + std::to_string(times) +
-                           ",\"output\":" + std::to_string(values) +
-                           ",\"interpolation\":\"LINEAR\"}");
+        const int values =
+            b.add<float>({0, 0, 0, 1, 0, 0, std::sin(spin), std::cos(spin)}, test::kFloat, "VEC4");
+        samplers.push_back("{\"input\":" + std::to_string(times) + ",\"output\":" +
+                           std::to_string(values) + ",\"interpolation\":\"LINEAR\"}");
         channels.push_back("{\"sampler\":" + std::to_string(samplers.size() - 1) +
                            ",\"target\":{\"node\":0,\"path\":\"rotation\"}}");
     }
@@ -80,8 +78,9 @@ std::string box_scene(const test::ScratchDir& dir, const std::vector<float>& box
                      join(channels) + "]}]";
     const std::string members =
         "\"materials\":[{\"doubleSided\":true}],"
-        "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
-        "},\"indices\":" + std::to_string(idx) + ",\"material\":0}]}],"
+        "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" +
+        std::to_string(pos) + "},\"indices\":" + std::to_string(idx) +
+        ",\"material\":0}]}],"
         "\"cameras\":[{\"type\":\"perspective\",\"perspective\":{\"yfov\":" +
         std::to_string(2 * std::atan(kTanHalfFov)) + ",\"aspectRatio\":1,\"znear\":0.1}}]," +
         nodes + ",\"scenes\":[{\"nodes\":[0,1]}]" + animations;
@@ -92,10 +91,30 @@ std::string box_scene(const test::ScratchDir& dir, const std::vector<float>& box
 test::Pixels render_vectors(const test::ScratchDir& dir, const std::string& scene,
                             const std::string& time) {
     const std::string exr = dir.file("v.exr");
-    const test::CliResult r = test::run_penumbra(
-        {"render", scene, "-o", exr, "--width", std::to_string(kSize), "--height",
-         std::to_string(kSize), "--spp", "4", "--filter", "box", "--time", time, "--fps",
-         "24", "--aov", "vector,depth,position", "--env-color", "1", "1", "1", "--no-preview", "-q"});
+    const test::CliResult r = test::run_penumbra({"render",
+                                                  scene,
+                                                  "-o",
+                                                  exr,
+                                                  "--width",
+                                                  std::to_string(kSize),
+                                                  "--height",
+                                                  std::to_string(kSize),
+                                                  "--spp",
+                                                  "4",
+                                                  "--filter",
+                                                  "box",
+                                                  "--time",
+                                                  time,
+                                                  "--fps",
+                                                  "24",
+                                                  "--aov",
+                                                  "vector,depth,position",
+                                                  "--env-color",
+                                                  "1",
+                                                  "1",
+                                                  "1",
+                                                  "--no-preview",
+                                                  "-q"});
     EXPECT_EQ(r.status, 0) << r.output;
     return test::read_pixels(exr);
 }
@@ -182,9 +201,9 @@ TEST(MotionVectorCli, ATurningBoxMovesEachPointAlongItsCircle) {
                          prev_y = -std::sin(a) * px + std::cos(a) * py;
             const double next_x = std::cos(a) * px - std::sin(a) * py,
                          next_y = std::sin(a) * px + std::cos(a) * py;
-            expect_vectors(p, x, x, y, y,
-                           {k * (prev_x - px), k * (prev_y - py), k * (px - next_x),
-                            k * (py - next_y)});
+            expect_vectors(
+                p, x, x, y, y,
+                {k * (prev_x - px), k * (prev_y - py), k * (px - next_x), k * (py - next_y)});
             ++checked;
         }
     EXPECT_GT(checked, 80);

@@ -10,8 +10,7 @@ namespace {
 // times its own EXT_mesh_gpu_instancing transform L where it has one; at t that is
 // W(t) L = W(t) W(open)^-1 to_world. A skinned instance's vertices are in world space
 // (its to_world is the identity at every time): they move through their positions.
-Mat4 instance_at(const GltfContext& ctx, const NodeMotion& motion, const Instance& inst,
-                 double t) {
+Mat4 instance_at(const GltfContext& ctx, const NodeMotion& motion, const Instance& inst, double t) {
     const tinygltf::Node& node = ctx.model.nodes[size_t(inst.node)];
     const Mat4& at_frame = inst.to_world.matrix();
     if (node.skin >= 0 || !motion.moves(inst.node)) return at_frame;

@@ -28,7 +28,8 @@ std::string neighbours_file(const test::ScratchDir& dir) {
     };
     const std::string members =
         "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
-        "},\"targets\":[{\"POSITION\":" + std::to_string(dp) + "}]}]}],"
+        "},\"targets\":[{\"POSITION\":" + std::to_string(dp) +
+        "}]}]}],"
         "\"cameras\":[{\"type\":\"perspective\",\"perspective\":{\"yfov\":0.8,\"znear\":0.1}}],"
         "\"nodes\":[{\"mesh\":0},{\"mesh\":0},{\"camera\":0,\"translation\":[0,0,5]}],"
         "\"scenes\":[{\"nodes\":[0,1,2]}],\"animations\":[{\"samplers\":[" +
