@@ -39,11 +39,15 @@ Vec3 object_point(const std::vector<Vec3>& positions, const TriangleMesh& mesh, 
     return positions[idx[0]] * b0 + positions[idx[1]] * hit.b1 + positions[idx[2]] * hit.b2;
 }
 
-// The hit's world point in a neighbouring frame.
-Vec3 neighbour_point(const NeighbourFrame& f, const TriangleMesh& mesh, const Hit& hit) {
-    const std::vector<Vec3>& moved = f.positions[hit.mesh];
-    return affine(f.instances[hit.instance],
-                  object_point(moved.empty() ? mesh.positions : moved, mesh, hit));
+// The hit's world point in a neighbouring frame (NeighbourFrame: what does not move there
+// is left out of it).
+Vec3 neighbour_point(const Scene& scene, const NeighbourFrame& f, const TriangleMesh& mesh,
+                     const Hit& hit) {
+    const bool deformed = hit.mesh < f.positions.size() && !f.positions[hit.mesh].empty();
+    const Mat4& to_world = f.instances.empty() ? scene.instances[hit.instance].to_world.matrix()
+                                               : f.instances[hit.instance];
+    return affine(to_world,
+                  object_point(deformed ? f.positions[hit.mesh] : mesh.positions, mesh, hit));
 }
 
 }  // namespace
@@ -65,8 +69,8 @@ Vec4 motion_vector(const Scene& scene, const MotionVectorCameras& cameras, const
     const Vec3 p = affine(scene.instances[hit.instance].to_world.matrix(),
                           object_point(mesh.positions, mesh, hit));
     const Vec2 at = raster(cameras.current, p);
-    const Vec2 before = raster(cameras.previous, neighbour_point(n.previous, mesh, hit));
-    const Vec2 after = raster(cameras.next, neighbour_point(n.next, mesh, hit));
+    const Vec2 before = raster(cameras.previous, neighbour_point(scene, n.previous, mesh, hit));
+    const Vec2 after = raster(cameras.next, neighbour_point(scene, n.next, mesh, hit));
     const Vec4 v(before.x - at.x, before.y - at.y, at.x - after.x, at.y - after.y);
     return std::isfinite(v.x + v.y + v.z + v.w) ? v : Vec4{};
 }

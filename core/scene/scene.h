@@ -113,10 +113,12 @@ struct CameraDesc {
 struct NeighbourFrame {
     double time = 0;  // animation seconds
     // Scene::instances[i]'s object-to-world matrix at `time` (a matrix, not a Transform:
-    // a node scaled to zero then is no error, and only points are mapped).
+    // a node scaled to zero then is no error, and only points are mapped); empty where no
+    // instance moves (each is at its to_world then too).
     std::vector<Mat4> instances;
-    // Scene::meshes[m]'s vertex positions at `time` (object space); empty for a mesh whose
-    // vertices are its positions then too (every mesh that does not deform).
+    // Scene::meshes[m]'s vertex positions at `time` (object space), for m below size();
+    // empty, or missing past the end, for a mesh whose vertices are its positions then too
+    // (every mesh that does not deform).
     std::vector<std::vector<Vec3>> positions;
     // Scene::cameras[c] at `time`: placed, and with its field of view then.
     std::vector<CameraDesc> cameras;

@@ -14,8 +14,8 @@ namespace penumbra {
 void start_frame_neighbours(const GltfContext& ctx, const Shutter& shutter, double offset,
                             Scene& scene);
 
-// Every instance's object-to-world matrix at the neighbouring frames, and one position
-// list per mesh (empty for those that load_nodes did not deform); after load_nodes.
+// Every instance's object-to-world matrix at the neighbouring frames where any instance
+// moves (none kept otherwise); after load_nodes.
 void finish_frame_neighbours(const GltfContext& ctx, const NodeMotion& motion, Scene& scene);
 
 }  // namespace penumbra
