@@ -4,6 +4,9 @@
 // the option.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <utility>
+
 #include "core/error.h"
 #include "io/gltf/gltf_loader.h"
 #include "support/gltf_builder.h"
@@ -96,6 +99,45 @@ TEST(GltfFrameNeighbours, AStillFileKeepsNothingOfThem) {
     for (const NeighbourFrame* f : {&s.frame_neighbours->previous, &s.frame_neighbours->next}) {
         EXPECT_TRUE(f->instances.empty()) << "every instance stays at its to_world";
         EXPECT_TRUE(f->positions.empty()) << "no mesh deforms";
+    }
+}
+
+TEST(GltfFrameNeighbours, GpuInstancesFollowTheirAnimatedNode) {
+    // A node scaled by 2 and turning LINEARly about +Z from 0 at 0 s to 90 degrees at 2 s,
+    // with EXT_mesh_gpu_instancing copies at x = 0 and x = 10 of its own space: at time t
+    // copy i is at 2 x_i (cos a, sin a, 0), a = 45 t degrees (the node's matrix times the
+    // copy's, in that order).
+    const test::ScratchDir dir;
+    test::GltfBuilder b;
+    const int pos = b.add<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}, test::kFloat, "VEC3");
+    const int copies = b.add<float>({0, 0, 0, 10, 0, 0}, test::kFloat, "VEC3");
+    const int times = b.add<float>({0, 2}, test::kFloat, "SCALAR");
+    const float h = std::sqrt(0.5f);
+    const int turn = b.add<float>({0, 0, 0, 1, 0, 0, h, h}, test::kFloat, "VEC4");
+    const std::string members =
+        "\"extensionsUsed\":[\"EXT_mesh_gpu_instancing\"],"
+        "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" +
+        std::to_string(pos) +
+        "}}]}],\"nodes\":[{\"mesh\":0,\"scale\":[2,2,2],\"extensions\":{"
+        "\"EXT_mesh_gpu_instancing\":{\"attributes\":{\"TRANSLATION\":" +
+        std::to_string(copies) +
+        "}}}}],\"scenes\":[{\"nodes\":[0]}],\"animations\":[{\"samplers\":[{\"input\":" +
+        std::to_string(times) + ",\"output\":" + std::to_string(turn) +
+        "}],\"channels\":[{\"sampler\":0,\"target\":{\"node\":0,\"path\":\"rotation\"}}]}]";
+    const Scene s =
+        load_at(b.write(dir, "copies.gltf", members, test::BufferStorage::DataUri), 1.0, 0.5);
+    ASSERT_EQ(s.instances.size(), 2u);
+    const FrameNeighbours& n = *s.frame_neighbours;
+    ASSERT_EQ(n.previous.instances.size(), 2u);
+    const double deg = 3.14159265358979 / 180;
+    for (size_t i = 0; i < 2; ++i) {
+        const double r = 20.0 * double(i);
+        for (const auto& [m, angle] : {std::pair<Mat4, double>{n.previous.instances[i], 22.5},
+                                       {s.instances[i].to_world.matrix(), 45.0},
+                                       {n.next.instances[i], 67.5}}) {
+            EXPECT_NEAR(m(0, 3), r * std::cos(angle * deg), 1e-4) << i << " at " << angle;
+            EXPECT_NEAR(m(1, 3), r * std::sin(angle * deg), 1e-4) << i << " at " << angle;
+        }
     }
 }
 
