@@ -3,7 +3,8 @@
 // filter): every point of the box's front face (z = 0.5) lies at depth 4.5, so a motion
 // parallel to the image plane moves each of them by the same number of pixels,
 // 32 * d / (4.5 * 0.5) for a world distance d. The layer follows Cycles' Vector pass:
-// X, Y = previous - current, Z, W = current - next, in pixels with +Y up the image.
+// X, Y = previous - current, Z, W = current - next, in pixels with +Y up the image. The
+// farm's bands merge to the vectors of one machine.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -220,6 +221,32 @@ TEST(MotionVectorCli, AStillSceneHasNoMotionAnywhere) {
     // The still box is in view: its vectors are 0 because it stands still, not because
     // nothing was hit (the depth is the distance to the front face's centre, 4.5).
     EXPECT_NEAR(at(p, "Depth.Z", 32, 32), kFaceDepth, 0.01);
+}
+
+TEST(MotionVectorCli, FarmBandsMergeToTheVectorsOfOneMachine) {
+    const test::ScratchDir dir;
+    const std::string scene = box_scene(dir, {2.4f, 0, 0}, {0, 0, 0}, 0.6f);
+    auto job = [&](const std::string& name, const std::string& out_dir) {
+        return dir.write(name, R"({"defaults": {"width": 32, "height": 32, "spp": 2, "time": 0.5,
+  "fps": 24, "aov": "vector", "out_dir": ")" +
+                                   dir.file(out_dir) + R"("},
+  "jobs": [{"scene": ")" + scene + R"(", "bands": 3, "name": "box.exr"}]})");
+    };
+    const test::CliResult ref =
+        test::run_penumbra({"render", "--job", job("ref.json", "ref"), "-q"});
+    ASSERT_EQ(ref.status, 0) << ref.output;
+    const std::string farm = job("farm.json", "farm");
+    for (int i = 0; i < 3; ++i) {
+        const test::CliResult t =
+            test::run_penumbra({"farm", "task", farm, "--index", std::to_string(i)});
+        EXPECT_EQ(t.status, 0) << i << ": " << t.output;
+    }
+    const test::CliResult m = test::run_penumbra({"farm", "merge", farm});
+    ASSERT_EQ(m.status, 0) << m.output;
+    EXPECT_TRUE(test::same_pixels(dir.file("ref/box.exr"), dir.file("farm/box.exr")));
+    const test::Pixels p = test::read_pixels(dir.file("farm/box.exr"));
+    ASSERT_TRUE(p.error.empty()) << p.error;
+    EXPECT_LT(at(p, "Vector.X", 24, 16), -0.1f) << "the box moves right";
 }
 
 }  // namespace
