@@ -44,8 +44,8 @@ AovRecord first_hit_aovs(const Ray& camera_ray, const RenderContext& ctx, uint64
         const std::optional<VisibleSurface> s =
             first_visible_surface(ray, ctx, rng, true, first_hit);
         if (!s) return {};
-        v = {true, s->sp.p, s->sp.instance, s->sp.material, s->sd.base_color, s->sd.frame.n,
-             s->hit};
+        v = {true,          s->sp.p, s->sp.instance, s->sp.material, s->sd.base_color,
+             s->sd.frame.n, s->hit};
     }
     AovRecord rec;
     rec.hit = true;

@@ -97,8 +97,9 @@ struct IntegratorOptions {
 
 // A camera ray's first visible surface as an integrator's first path vertex shaded it:
 // what the first-hit AOVs read (first_hit.h), which otherwise find and shade that surface
-// a second time, and a full coverage for a transparent background (camera_coverage.h). Filled only where it is the surface first_visible_surface returns: no
-// stochastic alpha pass-through before it, and fully opaque.
+// a second time, and a full coverage for a transparent background (camera_coverage.h).
+// Filled only where it is the surface first_visible_surface returns: no stochastic alpha
+// pass-through before it, and fully opaque.
 struct FirstVertex {
     bool valid = false;
     Vec3 p;

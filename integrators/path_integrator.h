@@ -24,13 +24,14 @@ public:
 
 private:
     // The path loop; first_hit: the camera ray's closest hit when traced already (nullptr:
-    // trace it); first: where given, filled with the first vertex (FirstVertex). Instantiated per scene kind, so that a scene without volumes or alpha
-    // does none of their work per bounce (decided once per call, from RenderContext).
+    // trace it); first: where given, filled with the first vertex (FirstVertex). Instantiated per
+    // scene kind, so that a scene without volumes or alpha does none of their work per bounce
+    // (decided once per call, from RenderContext).
     template <bool kMedia, bool kAlpha>
     Spectrum trace(const Ray& ray, const std::optional<Hit>* first_hit, const RenderContext& ctx,
                    Sampler& sampler, FirstVertex* first) const;
-    Spectrum dispatch(const Ray& ray, const std::optional<Hit>* first_hit,
-                      const RenderContext& ctx, Sampler& sampler, FirstVertex* first) const;
+    Spectrum dispatch(const Ray& ray, const std::optional<Hit>* first_hit, const RenderContext& ctx,
+                      Sampler& sampler, FirstVertex* first) const;
     IntegratorOptions m_options;
 };
 

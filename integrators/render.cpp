@@ -29,7 +29,7 @@ bool abandon(const RenderOptions& o) {
 // Pixels go in blocks of 4 x 2. For an integrator that takes a traced first hit, a
 // full block's camera rays of one sample index are traced as one packet: coherent
 // rays cost Embree about a third as much each in a packet as one by one
-// (docs/performance.md, "Embree packets and streams"). Each pixel keeps its samples
+// (docs/performance-traversal.md, "Embree packets and streams"). Each pixel keeps its samples
 // in index order, and each lane its own sampler, so the image does not change.
 constexpr int kBlockW = 4, kBlockH = 2, kLanes = kBlockW * kBlockH;
 
@@ -133,12 +133,11 @@ inline void add_sample(const Pass& pass, int x, int y, uint32_t s, const Ray& ra
     if constexpr (kAovs) {
         // The key seeds the AOVs' own coin flips: hashed only where something draws them
         // (the guides, or first-hit AOVs the integrator's first vertex does not give).
-        const bool drawn = pass.guides || (pass.first_hit && !(first && first->valid) &&
-                                           !(hit && !*hit));
+        const bool drawn =
+            pass.guides || (pass.first_hit && !(first && first->valid) && !(hit && !*hit));
         const uint64_t key = drawn ? hash_values(pass.options.seed, x, y, s) : 0;
-        AovRecord aov = pass.first_hit
-                            ? first_hit_aovs(ray, pass.ctx, key, hit, first, pass.hashes)
-                            : AovRecord{};
+        AovRecord aov = pass.first_hit ? first_hit_aovs(ray, pass.ctx, key, hit, first, pass.hashes)
+                                       : AovRecord{};
         if (pass.guides) aov.guide = denoise_guide(ray, pass.ctx, key, hit);
         // An opaque first vertex with no coin-flipped surface before it covers fully.
         if (pass.coverage)

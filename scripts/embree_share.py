@@ -8,8 +8,8 @@ process (start-up included: the dynamic loader and the kernel take about 5%).
 
 The share moves by about two points from run to run and from day to day on this VM, and
 it barely follows penumbra's own instruction count: when ours falls, Embree's samples
-fall about as much (docs/performance.md, "Embree's share"). Compare binaries in one
-invocation, and quote medians of several rounds.
+fall about as much (docs/performance-traversal.md, "Embree's share of a render"). Compare
+binaries in one invocation, and quote medians of several rounds.
 
   python3 scripts/embree_share.py /tmp/old/penumbra build/bin/penumbra --rounds 8
 

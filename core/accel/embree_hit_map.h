@@ -103,7 +103,7 @@ private:
     // within EmbreeBuildOptions::flatten_budget triangles).
     std::vector<std::vector<Facet>> m_facets;
     // And their triangles' planes, for refining: 48 bytes a triangle, which save building
-    // the plane from the vertices at every hit (docs/performance.md, "Hits recomputed
+    // the plane from the vertices at every hit (docs/performance-traversal.md, "Hits recomputed
     // from Embree's choice of triangle").
     std::vector<std::vector<TrianglePlane>> m_planes;
     size_t m_record_bytes = 0;

@@ -39,7 +39,7 @@ inline TrianglePlane make_triangle_plane(Vec3 p0, Vec3 p1, Vec3 p2) {
 // The arithmetic is that of the formulas on Vec3 (dot's (x + y) + z, no fused
 // multiply-add), done two dot products at a time in F4 lanes: the same bits in two thirds
 // of the scalar code's instructions, which matters because every hit EmbreeAccel reports
-// comes through here (docs/performance.md, "Hits recomputed from Embree's choice of
+// comes through here (docs/performance-traversal.md, "Hits recomputed from Embree's choice of
 // triangle").
 inline bool triangle_plane_hit(const TrianglePlane& tp, const Ray& ray, TriangleHit* hit) {
     // Lanes 0-2 hold x, y, z; lane 3 holds the next member and is never summed. g2 is the
