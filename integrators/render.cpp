@@ -262,16 +262,27 @@ bool render_samples(const RenderContext& ctx, const Camera& camera, const Integr
                     plan_tiles(options, w, h, threads),
                     progress,
                     abandoned};
+    const auto render_tiles = [&](int begin, int end) {
+        for (int t = begin; t != end; ++t) {
+            if (film.aovs().any())
+                render_tile<true>(pass, t);
+            else
+                render_tile<false>(pass, t);
+        }
+    };
+    const int tiles = pass.grid.tiles_x * pass.grid.tiles_y;
+    // One thread: the tiles in order on this one, without the scheduler, which adds
+    // nothing there but waits whose length (and instruction count: render_instructions.sh
+    // compares counts) follows the machine's load. Tiles do not share pixels, so the
+    // image is the same in any order.
+    if (threads == 1) {
+        render_tiles(0, tiles);
+        return !abandoned;
+    }
     auto run = [&] {
-        tbb::parallel_for(tbb::blocked_range<int>(0, pass.grid.tiles_x * pass.grid.tiles_y),
-                          [&](const tbb::blocked_range<int>& r) {
-                              for (int t = r.begin(); t != r.end(); ++t) {
-                                  if (film.aovs().any())
-                                      render_tile<true>(pass, t);
-                                  else
-                                      render_tile<false>(pass, t);
-                              }
-                          });
+        tbb::parallel_for(tbb::blocked_range<int>(0, tiles), [&](const tbb::blocked_range<int>& r) {
+            render_tiles(r.begin(), r.end());
+        });
     };
     // render() runs all its passes in one arena of this size: reuse it rather than
     // make a new one per pass, whose workers would have to join it again each time.
