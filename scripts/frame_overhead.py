@@ -16,41 +16,17 @@ loop's share, and the mean split of the extra frames' set-up in milliseconds.
 import argparse
 import os
 import re
-import resource
 import statistics
-import subprocess
 import sys
 import tempfile
-import time
 
-import OpenImageIO as oiio
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from view_overhead import render_seconds, run_logged  # noqa: E402
 
 STAGES = ["parse", "meshes", "materials", "nodes", "build"]
 LINE = re.compile(r"(?:load|pose) and build: parse ([\d.]+) s \(cpu [\d.]+\), "
                   r"meshes ([\d.]+) \([\d.]+\), materials ([\d.]+) \([\d.]+\), "
                   r"nodes ([\d.]+) \([\d.]+\); \S+ build ([\d.]+) s")
-
-
-def run(binary, args):
-    """Wall and CPU (user + system) seconds of one penumbra process, and its log."""
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    t0 = time.perf_counter()
-    p = subprocess.run([binary] + args, capture_output=True, text=True)
-    wall = time.perf_counter() - t0
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    if p.returncode != 0:
-        raise RuntimeError("%s failed:\n%s" % (" ".join(args), p.stderr[-2000:]))
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    return wall, cpu, p.stdout + p.stderr
-
-
-def render_seconds(folder):
-    total = 0.0
-    for name in os.listdir(folder):
-        if name.endswith(".exr"):
-            total += oiio.ImageInput.open(os.path.join(folder, name)).spec().getattribute(
-                "penumbra:render_seconds")
-    return total
 
 
 def split(log):
@@ -63,8 +39,8 @@ def split(log):
 
 def measure(binary, scene, frames, common, tmp):
     def frames_run(n, out):
-        return run(binary, ["render", scene, "--frames", "0-%d" % (n - 1), "--out-dir", out,
-                            "--overwrite"] + common)
+        return run_logged(binary, ["render", scene, "--frames", "0-%d" % (n - 1),
+                                   "--out-dir", out, "--overwrite"] + common)
 
     one = frames_run(1, os.path.join(tmp, "one"))
     many = frames_run(frames, os.path.join(tmp, "many"))

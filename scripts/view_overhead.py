@@ -25,8 +25,8 @@ import time
 import OpenImageIO as oiio
 
 
-def run(binary, args):
-    """Wall and CPU (user + system) seconds of one penumbra process."""
+def run_logged(binary, args):
+    """Wall and CPU (user + system) seconds of one penumbra process, and its log."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
     p = subprocess.run([binary] + args, capture_output=True, text=True)
@@ -35,7 +35,12 @@ def run(binary, args):
     if p.returncode != 0:
         raise RuntimeError("%s failed:\n%s" % (" ".join(args), p.stderr[-2000:]))
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    return wall, cpu
+    return wall, cpu, p.stdout + p.stderr
+
+
+def run(binary, args):
+    """Wall and CPU (user + system) seconds of one penumbra process."""
+    return run_logged(binary, args)[:2]
 
 
 def render_seconds(folder):

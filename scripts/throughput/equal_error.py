@@ -21,7 +21,6 @@ import glob
 import json
 import math
 import os
-import shutil
 import subprocess
 import sys
 import time
@@ -92,10 +91,7 @@ def mean_error(folder_of, reference_of, names, views, pattern):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    p.add_argument("--penumbra", default=os.path.join(ROOT, "build", "bin", "penumbra"))
-    p.add_argument("--blender", default=shutil.which("blender") or "blender")
-    p.add_argument("--shared", default=os.environ.get("PENUMBRA_SHARED_DIR",
-                                                      os.path.join(ROOT, "..", "shared")))
+    vs_blender.add_tool_arguments(p)
     p.add_argument("--assets", default="Fox,FlightHelmet,SheenCloth,AttenuationTest")
     p.add_argument("--views", type=int, default=2)
     p.add_argument("--size", type=int, default=256)

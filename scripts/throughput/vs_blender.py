@@ -78,12 +78,17 @@ def run_blender(args, assets):
     return result
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+def add_tool_arguments(p):
+    """The binaries and the shared assets, as the throughput scripts take them."""
     p.add_argument("--penumbra", default=os.path.join(ROOT, "build", "bin", "penumbra"))
     p.add_argument("--blender", default=shutil.which("blender") or "blender")
     p.add_argument("--shared", default=os.environ.get("PENUMBRA_SHARED_DIR",
                                                       os.path.join(ROOT, "..", "shared")))
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    add_tool_arguments(p)
     p.add_argument("--assets", type=int, default=100)
     p.add_argument("--views", type=int, default=8)
     p.add_argument("--size", type=int, default=256)
