@@ -21,7 +21,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from view_overhead import render_seconds, run_logged  # noqa: E402
+from view_overhead import (overhead_arguments, render_arguments, render_seconds,  # noqa: E402
+                           run_logged)
 
 STAGES = ["parse", "meshes", "materials", "nodes", "build"]
 LINE = re.compile(r"(?:load|pose) and build: parse ([\d.]+) s \(cpu [\d.]+\), "
@@ -56,16 +57,11 @@ def measure(binary, scene, frames, common, tmp):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("scenes", nargs="+")
-    ap.add_argument("--binary", default="build/bin/penumbra")
+    overhead_arguments(ap)
     ap.add_argument("--baseline", help="another penumbra binary, measured alternately")
     ap.add_argument("--frames", type=int, default=8)
-    ap.add_argument("--rounds", type=int, default=3)
-    ap.add_argument("--size", type=int, default=64)
-    ap.add_argument("--threads", type=int, default=1)
     a = ap.parse_args()
-    common = ["--width", str(a.size), "--height", str(a.size), "--spp", "1", "--threads",
-              str(a.threads), "--timing-metadata"]
+    common = render_arguments(a)
     print("scene  binary  s/frame  cpu s/frame  of which render loop  | ms per later frame: " +
           "  ".join(STAGES))
     binaries = [a.binary] + ([a.baseline] if a.baseline else [])

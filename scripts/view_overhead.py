@@ -79,17 +79,27 @@ def measure(binary, scene, views, common, tmp):
     }
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+def overhead_arguments(ap):
+    """The scenes, binary, rounds and image of an overhead measurement (also frame_overhead.py)."""
     ap.add_argument("scenes", nargs="+")
     ap.add_argument("--binary", default="build/bin/penumbra")
-    ap.add_argument("--views", type=int, default=9)
     ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--size", type=int, default=64)
     ap.add_argument("--threads", type=int, default=1)
+
+
+def render_arguments(a):
+    """The render options every measured process gets: 1 spp, timings in the EXR."""
+    return ["--width", str(a.size), "--height", str(a.size), "--spp", "1", "--threads",
+            str(a.threads), "--timing-metadata"]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    overhead_arguments(ap)
+    ap.add_argument("--views", type=int, default=9)
     a = ap.parse_args()
-    common = ["--width", str(a.size), "--height", str(a.size), "--spp", "1", "--threads",
-              str(a.threads), "--timing-metadata"]
+    common = render_arguments(a)
     print("scene  s/view (one load)  cpu s/view  of which render loop  s/image (a load each)  cpu")
     for scene in a.scenes:
         rounds = []
